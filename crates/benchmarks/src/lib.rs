@@ -43,7 +43,11 @@ impl Suite {
         let configured = std::env::var_os("DEMOPLAN_BENCHMARKS")
             .map(PathBuf::from)
             .unwrap_or_else(|| PathBuf::from("../shared/benchmarks"));
-        let root = if configured.is_absolute() { configured } else { workspace.join(configured) };
+        let root = if configured.is_absolute() {
+            configured
+        } else {
+            workspace.join(configured)
+        };
         let root = root.canonicalize().map_err(|e| {
             format!(
                 "benchmark folder {} not found ({e}); set DEMOPLAN_BENCHMARKS to the folder with \
@@ -65,7 +69,8 @@ impl Suite {
     /// The instances of `optimal_costs.csv`, in file order.
     pub fn instances(&self) -> Result<Vec<Instance>, String> {
         let path = self.root.join("optimal_costs.csv");
-        let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let text =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
         let mut lines = text.lines().enumerate();
         let header = lines.next().map(|(_, l)| l).unwrap_or_default();
         let columns: Vec<&str> = header.split(',').collect();
@@ -99,9 +104,9 @@ impl Suite {
                 name: field(instance)?.to_string(),
                 domain_file: self.root.join(field(domain_file)?),
                 problem_file: self.root.join(field(problem_file)?),
-                optimal_cost: field(cost)?.parse().map_err(|e| {
-                    format!("{}:{}: optimal_cost: {e}", path.display(), index + 1)
-                })?,
+                optimal_cost: field(cost)?
+                    .parse()
+                    .map_err(|e| format!("{}:{}: optimal_cost: {e}", path.display(), index + 1))?,
             });
         }
         Ok(out)

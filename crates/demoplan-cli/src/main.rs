@@ -1,1 +1,50 @@
-fn main() {}
+//! The `demoplan` executable: parses the command line and hands each subcommand to the
+//! library crates. It is the only place that touches files, processes and the terminal.
+
+mod cli;
+mod commands;
+mod diagnostic;
+mod exit;
+mod input;
+
+use std::io::Write;
+
+use clap::Parser;
+
+use diagnostic::Failure;
+use exit::ExitCode;
+
+fn main() {
+    let code = match cli::Cli::try_parse() {
+        Ok(cli) => match run(cli) {
+            Ok(code) => code,
+            Err(failure) => {
+                let _ = std::io::stdout().flush();
+                eprint!("{}", failure.text);
+                failure.code
+            }
+        },
+        Err(e) => {
+            // Help and version are not errors. Anything else is Fast Downward's "driver
+            // input error" (36): clap's own code 2 means "plan found, out of time" there.
+            let _ = e.print();
+            if e.use_stderr() {
+                ExitCode::USAGE
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+    };
+    std::process::exit(code.0);
+}
+
+fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
+    match cli.command {
+        cli::Command::Check { files } => commands::check::run(&files),
+        cli::Command::Fmt {
+            files,
+            check,
+            stdout,
+        } => commands::fmt::run(&files, check, stdout),
+    }
+}

@@ -18,7 +18,10 @@ pub struct Name {
 impl Name {
     /// A name that was not parsed from text.
     pub fn new(text: impl Into<String>) -> Name {
-        Name { text: text.into(), span: Span::NONE }
+        Name {
+            text: text.into(),
+            span: Span::NONE,
+        }
     }
 
     /// The text.

@@ -35,7 +35,13 @@ pub struct PddlError {
 
 impl PddlError {
     pub(crate) fn new(kind: ErrorKind, span: Span, message: impl Into<String>) -> PddlError {
-        PddlError { kind, message: message.into(), span, label: String::from("here"), help: None }
+        PddlError {
+            kind,
+            message: message.into(),
+            span,
+            label: String::from("here"),
+            help: None,
+        }
     }
 
     pub(crate) fn syntax(span: Span, message: impl Into<String>) -> PddlError {
@@ -48,12 +54,16 @@ impl PddlError {
 
     /// `feature` names the PDDL construct, e.g. "conditional effects (`when`)".
     pub(crate) fn unsupported(span: Span, feature: &str) -> PddlError {
-        PddlError::new(ErrorKind::Unsupported, span, format!("{feature} are not supported"))
-            .with_label("outside the supported fragment")
-            .with_help(
-                "demoplan plans on STRIPS with typing, negative preconditions, equality and \
+        PddlError::new(
+            ErrorKind::Unsupported,
+            span,
+            format!("{feature} are not supported"),
+        )
+        .with_label("outside the supported fragment")
+        .with_help(
+            "demoplan plans on STRIPS with typing, negative preconditions, equality and \
                  action costs",
-            )
+        )
     }
 
     pub(crate) fn with_label(mut self, label: impl Into<String>) -> PddlError {

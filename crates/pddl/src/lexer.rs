@@ -41,7 +41,11 @@ pub(crate) fn read_single_list(source: &str) -> Result<(SExpr, Comments), PddlEr
     if source.len() >= u32::MAX as usize {
         return Err(PddlError::syntax(Span::NONE, "file is larger than 4 GiB"));
     }
-    let mut reader = Reader { src: source.as_bytes(), pos: 0, comments: Comments::default() };
+    let mut reader = Reader {
+        src: source.as_bytes(),
+        pos: 0,
+        comments: Comments::default(),
+    };
     reader.skip_blanks();
     let top = match reader.peek() {
         None => {
@@ -52,8 +56,11 @@ pub(crate) fn read_single_list(source: &str) -> Result<(SExpr, Comments), PddlEr
         Some(b')') => return Err(reader.unexpected_close()),
         Some(_) => {
             let token = reader.token();
-            return Err(PddlError::syntax(token.span, format!("expected `(define`, found `{}`", token.text))
-                .with_label("expected `(`"));
+            return Err(PddlError::syntax(
+                token.span,
+                format!("expected `(define`, found `{}`", token.text),
+            )
+            .with_label("expected `(`"));
         }
     };
     reader.skip_blanks();
@@ -142,7 +149,10 @@ impl Reader<'_> {
                     let Some((open, items)) = stack.pop() else {
                         return Err(self.unexpected_close());
                     };
-                    let list = SExpr::List { items, span: Span::new(open, self.pos) };
+                    let list = SExpr::List {
+                        items,
+                        span: Span::new(open, self.pos),
+                    };
                     match stack.last_mut() {
                         Some((_, parent)) => parent.push(list),
                         None => return Ok(list),
@@ -169,7 +179,10 @@ impl Reader<'_> {
             self.pos += 1;
         }
         let raw = String::from_utf8_lossy(&self.src[start..self.pos]);
-        Token { text: raw.to_lowercase(), span: Span::new(start, self.pos) }
+        Token {
+            text: raw.to_lowercase(),
+            span: Span::new(start, self.pos),
+        }
     }
 }
 
@@ -181,7 +194,10 @@ mod tests {
         match e {
             SExpr::Token(t) => t.text.clone(),
             SExpr::List { items, .. } => {
-                format!("[{}]", items.iter().map(texts).collect::<Vec<_>>().join(" "))
+                format!(
+                    "[{}]",
+                    items.iter().map(texts).collect::<Vec<_>>().join(" ")
+                )
             }
         }
     }

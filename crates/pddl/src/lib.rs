@@ -39,8 +39,11 @@ pub use span::Span;
 pub fn parse_domain(source: &str) -> Result<Domain, PddlError> {
     match parse_file(source)?.content {
         PddlFile::Domain(d) => Ok(d),
-        PddlFile::Problem(p) => Err(PddlError::syntax(p.name.span, "expected a domain, found a problem")
-            .with_label("this file defines a problem")),
+        PddlFile::Problem(p) => Err(PddlError::syntax(
+            p.name.span,
+            "expected a domain, found a problem",
+        )
+        .with_label("this file defines a problem")),
     }
 }
 
@@ -48,8 +51,11 @@ pub fn parse_domain(source: &str) -> Result<Domain, PddlError> {
 pub fn parse_problem(source: &str) -> Result<Problem, PddlError> {
     match parse_file(source)?.content {
         PddlFile::Problem(p) => Ok(p),
-        PddlFile::Domain(d) => Err(PddlError::syntax(d.name.span, "expected a problem, found a domain")
-            .with_label("this file defines a domain")),
+        PddlFile::Domain(d) => Err(PddlError::syntax(
+            d.name.span,
+            "expected a problem, found a domain",
+        )
+        .with_label("this file defines a domain")),
     }
 }
 
@@ -74,7 +80,10 @@ pub fn parse_file(source: &str) -> Result<ParsedFile, PddlError> {
     if let PddlFile::Domain(d) = &content {
         check::check_domain(d)?;
     }
-    Ok(ParsedFile { content, comments: comments.spans })
+    Ok(ParsedFile {
+        content,
+        comments: comments.spans,
+    })
 }
 
 impl Domain {
@@ -89,11 +98,20 @@ impl Domain {
             || self.actions.iter().any(|a| typed(&a.params))
             || problem.is_some_and(|p| typed(&p.objects));
         let goal = problem.map_or(&[][..], |p| &p.goal[..]);
-        let literals = || self.actions.iter().flat_map(|a| &a.precondition).chain(goal);
+        let literals = || {
+            self.actions
+                .iter()
+                .flat_map(|a| &a.precondition)
+                .chain(goal)
+        };
         let uses_negation = literals().any(|l| !l.positive && !l.atom.is_equality());
         let uses_equality = literals().any(|l| l.atom.is_equality());
         let uses_costs = !self.functions.is_empty()
-            || self.actions.iter().flat_map(|a| &a.effects).any(|e| matches!(e, Effect::IncreaseCost(_)))
+            || self
+                .actions
+                .iter()
+                .flat_map(|a| &a.effects)
+                .any(|e| matches!(e, Effect::IncreaseCost(_)))
             || problem.is_some_and(|p| p.metric.is_some());
         for (flag, on) in [
             (":typing", uses_typing),

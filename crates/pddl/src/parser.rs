@@ -17,9 +17,9 @@ pub enum PddlFile {
 pub(crate) fn parse_file(source: &str) -> Result<(PddlFile, Comments), PddlError> {
     let (top, comments) = read_single_list(source)?;
     let (items, span) = as_list(&top, "`(define ...)`")?;
-    let define = items.first().ok_or_else(|| {
-        PddlError::syntax(span, "empty list where `(define ...)` was expected")
-    })?;
+    let define = items
+        .first()
+        .ok_or_else(|| PddlError::syntax(span, "empty list where `(define ...)` was expected"))?;
     let define_token = expect_token(define, "`define`")?;
     if define_token.text != "define" {
         return Err(PddlError::syntax(
@@ -29,14 +29,19 @@ pub(crate) fn parse_file(source: &str) -> Result<(PddlFile, Comments), PddlError
         .with_label("a PDDL file starts with `(define`"));
     }
     let header = items.get(1).ok_or_else(|| {
-        PddlError::syntax(span, "`(define` has no `(domain NAME)` or `(problem NAME)` header")
+        PddlError::syntax(
+            span,
+            "`(define` has no `(domain NAME)` or `(problem NAME)` header",
+        )
     })?;
     let (header_items, header_span) = as_list(header, "`(domain NAME)` or `(problem NAME)`")?;
     let kind = header_items
         .first()
         .map(|e| expect_token(e, "`domain` or `problem`"))
         .transpose()?
-        .ok_or_else(|| PddlError::syntax(header_span, "expected `(domain NAME)` or `(problem NAME)`"))?;
+        .ok_or_else(|| {
+            PddlError::syntax(header_span, "expected `(domain NAME)` or `(problem NAME)`")
+        })?;
     if header_items.len() != 2 {
         return Err(PddlError::syntax(
             header_span,
@@ -47,7 +52,7 @@ pub(crate) fn parse_file(source: &str) -> Result<(PddlFile, Comments), PddlError
     let sections = &items[2..];
     match kind.text.as_str() {
         "domain" => Ok((PddlFile::Domain(domain(name, sections)?), comments)),
-        "problem" => Ok((PddlFile::Problem(problem(name, sections, span)?), comments)),
+        "problem" => Ok((PddlFile::Problem(problem(name, sections)?), comments)),
         other => Err(PddlError::syntax(
             kind.span,
             format!("expected `domain` or `problem`, found `{other}`"),
@@ -94,16 +99,25 @@ fn plain_name(t: &Token, what: &str) -> Result<Name, PddlError> {
             format!("expected {what}, found {found} `{}`", t.text),
         )
         .with_label(format!("expected {what}"))),
-        None => Ok(Name { text: t.text.clone(), span: t.span }),
+        None => Ok(Name {
+            text: t.text.clone(),
+            span: t.span,
+        }),
     }
 }
 
 fn variable(t: &Token) -> Result<Name, PddlError> {
     if t.text.starts_with('?') && t.text.len() > 1 {
-        Ok(Name { text: t.text.clone(), span: t.span })
+        Ok(Name {
+            text: t.text.clone(),
+            span: t.span,
+        })
     } else {
-        Err(PddlError::syntax(t.span, format!("expected a variable `?name`, found `{}`", t.text))
-            .with_label("parameters start with `?`"))
+        Err(PddlError::syntax(
+            t.span,
+            format!("expected a variable `?name`, found `{}`", t.text),
+        )
+        .with_label("parameters start with `?`"))
     }
 }
 
@@ -123,8 +137,10 @@ fn typed_list(items: &[SExpr], kind: ItemKind, what: &str) -> Result<Vec<Typed>,
         let token = expect_token(&items[i], what)?;
         if token.text == "-" {
             if untyped_from == out.len() {
-                return Err(PddlError::syntax(token.span, format!("`-` with no {what} before it"))
-                    .with_label("a type needs names to apply to"));
+                return Err(
+                    PddlError::syntax(token.span, format!("`-` with no {what} before it"))
+                        .with_label("a type needs names to apply to"),
+                );
             }
             let ty = match items.get(i + 1) {
                 Some(e) => parse_type(e)?,
@@ -154,7 +170,10 @@ fn parse_type(e: &SExpr) -> Result<Type, PddlError> {
     match e {
         SExpr::Token(t) => Ok(Type::Named(plain_name(t, "a type")?)),
         SExpr::List { items, span } => {
-            let head = items.first().map(|h| expect_token(h, "`either`")).transpose()?;
+            let head = items
+                .first()
+                .map(|h| expect_token(h, "`either`"))
+                .transpose()?;
             match head {
                 Some(h) if h.text == "either" && items.len() > 1 => {
                     let names = items[1..]
@@ -163,14 +182,20 @@ fn parse_type(e: &SExpr) -> Result<Type, PddlError> {
                         .collect::<Result<Vec<_>, _>>()?;
                     Ok(Type::Either(names))
                 }
-                _ => Err(PddlError::syntax(*span, "expected a type name or `(either t1 t2 ...)`")),
+                _ => Err(PddlError::syntax(
+                    *span,
+                    "expected a type name or `(either t1 t2 ...)`",
+                )),
             }
         }
     }
 }
 
 /// The keyword heading a section, e.g. `:predicates`.
-fn section_keyword<'a>(e: &'a SExpr, what: &str) -> Result<(&'a Token, &'a [SExpr], Span), PddlError> {
+fn section_keyword<'a>(
+    e: &'a SExpr,
+    what: &str,
+) -> Result<(&'a Token, &'a [SExpr], Span), PddlError> {
     let (items, span) = as_list(e, what)?;
     let head = items
         .first()
@@ -179,7 +204,10 @@ fn section_keyword<'a>(e: &'a SExpr, what: &str) -> Result<(&'a Token, &'a [SExp
     if !head.text.starts_with(':') {
         return Err(PddlError::syntax(
             head.span,
-            format!("expected a section keyword such as `:action`, found `{}`", head.text),
+            format!(
+                "expected a section keyword such as `:action`, found `{}`",
+                head.text
+            ),
         )
         .with_label("sections start with `:`")
         .with_help("check the parentheses: this list may have closed too early or too late"));
@@ -188,9 +216,11 @@ fn section_keyword<'a>(e: &'a SExpr, what: &str) -> Result<(&'a Token, &'a [SExp
 }
 
 fn once(seen: &mut Vec<String>, head: &Token) -> Result<(), PddlError> {
-    if seen.iter().any(|s| *s == head.text) {
-        return Err(PddlError::syntax(head.span, format!("section `{}` appears twice", head.text))
-            .with_label("second occurrence"));
+    if seen.contains(&head.text) {
+        return Err(
+            PddlError::syntax(head.span, format!("section `{}` appears twice", head.text))
+                .with_label("second occurrence"),
+        );
     }
     seen.push(head.text.clone());
     Ok(())
@@ -235,21 +265,40 @@ fn domain(name: Name, sections: &[SExpr]) -> Result<Domain, PddlError> {
                 d.functions = functions(body)?;
             }
             ":action" => d.actions.push(action(body, span)?),
-            ":derived" => return Err(PddlError::unsupported(head.span, "derived predicates (`:derived`)")),
-            ":durative-action" => {
-                return Err(PddlError::unsupported(head.span, "durative actions (`:durative-action`)"))
+            ":derived" => {
+                return Err(PddlError::unsupported(
+                    head.span,
+                    "derived predicates (`:derived`)",
+                ))
             }
-            ":constraints" => return Err(PddlError::unsupported(head.span, "constraints (`:constraints`)")),
+            ":durative-action" => {
+                return Err(PddlError::unsupported(
+                    head.span,
+                    "durative actions (`:durative-action`)",
+                ))
+            }
+            ":constraints" => {
+                return Err(PddlError::unsupported(
+                    head.span,
+                    "constraints (`:constraints`)",
+                ))
+            }
             ":process" | ":event" => {
-                return Err(PddlError::unsupported(head.span, "processes and events (PDDL+)"))
+                return Err(PddlError::unsupported(
+                    head.span,
+                    "processes and events (PDDL+)",
+                ))
             }
             other => {
-                return Err(PddlError::syntax(head.span, format!("unknown domain section `{other}`"))
-                    .with_label("not a domain section")
-                    .with_help(
-                        "a domain has :requirements, :types, :constants, :predicates, :functions \
+                return Err(PddlError::syntax(
+                    head.span,
+                    format!("unknown domain section `{other}`"),
+                )
+                .with_label("not a domain section")
+                .with_help(
+                    "a domain has :requirements, :types, :constants, :predicates, :functions \
                          and :action sections",
-                    ))
+                ))
             }
         }
     }
@@ -261,10 +310,19 @@ fn requirements(body: &[SExpr]) -> Result<Vec<Requirement>, PddlError> {
         .map(|e| {
             let t = expect_token(e, "a requirement such as `:strips`")?;
             if t.text.starts_with(':') && t.text.len() > 1 {
-                Ok(Requirement { name: t.text.clone(), span: t.span })
+                Ok(Requirement {
+                    name: t.text.clone(),
+                    span: t.span,
+                })
             } else {
-                Err(PddlError::syntax(t.span, format!("expected a requirement such as `:strips`, found `{}`", t.text))
-                    .with_label("requirements start with `:`"))
+                Err(PddlError::syntax(
+                    t.span,
+                    format!(
+                        "expected a requirement such as `:strips`, found `{}`",
+                        t.text
+                    ),
+                )
+                .with_label("requirements start with `:`"))
             }
         })
         .collect()
@@ -299,16 +357,17 @@ fn functions(body: &[SExpr]) -> Result<Vec<FunctionDecl>, PddlError> {
                             "functions of a type other than `number` (object fluents)",
                         ))
                     }
-                    None => {
-                        return Err(PddlError::syntax(t.span, "expected `number` after `-`"))
-                    }
+                    None => return Err(PddlError::syntax(t.span, "expected `number` after `-`")),
                 }
                 i += 2;
             }
             SExpr::Token(t) => {
                 return Err(PddlError::syntax(
                     t.span,
-                    format!("expected a function declaration `(name ?params)`, found `{}`", t.text),
+                    format!(
+                        "expected a function declaration `(name ?params)`, found `{}`",
+                        t.text
+                    ),
                 ))
             }
         }
@@ -321,7 +380,12 @@ fn action(body: &[SExpr], span: Span) -> Result<Action, PddlError> {
         .first()
         .ok_or_else(|| PddlError::syntax(span, "`:action` without a name"))?;
     let name = plain_name(expect_token(name_expr, "an action name")?, "an action name")?;
-    let mut a = Action { name, params: Vec::new(), precondition: Vec::new(), effects: Vec::new() };
+    let mut a = Action {
+        name,
+        params: Vec::new(),
+        precondition: Vec::new(),
+        effects: Vec::new(),
+    };
     let mut seen = Vec::new();
     let mut i = 1;
     while i < body.len() {
@@ -345,12 +409,17 @@ fn action(body: &[SExpr], span: Span) -> Result<Action, PddlError> {
                 effect(value, &mut a.effects)?;
             }
             ":vars" | ":duration" | ":condition" => {
-                return Err(PddlError::unsupported(key.span, &format!("action keywords like `{}`", key.text)))
+                return Err(PddlError::unsupported(
+                    key.span,
+                    &format!("action keywords like `{}`", key.text),
+                ))
             }
             other => {
                 return Err(PddlError::syntax(
                     key.span,
-                    format!("expected `:parameters`, `:precondition` or `:effect`, found `{other}`"),
+                    format!(
+                        "expected `:parameters`, `:precondition` or `:effect`, found `{other}`"
+                    ),
                 )
                 .with_label("not an action keyword"))
             }
@@ -370,7 +439,9 @@ enum Scope {
 /// Adds the literals of a condition to `out`, flattening `and`.
 fn condition(e: &SExpr, out: &mut Vec<Literal>, scope: Scope) -> Result<(), PddlError> {
     let (items, span) = as_list(e, "a condition")?;
-    let Some(head) = items.first() else { return Ok(()) };
+    let Some(head) = items.first() else {
+        return Ok(());
+    };
     let head = expect_token(head, "a predicate name or `and`/`not`")?;
     match head.text.as_str() {
         "and" => {
@@ -386,17 +457,26 @@ fn condition(e: &SExpr, out: &mut Vec<Literal>, scope: Scope) -> Result<(), Pddl
             let (inner_items, inner_span) = as_list(inner, "an atom")?;
             if let Some(SExpr::Token(h)) = inner_items.first() {
                 if let Some(feature) = compound_condition(&h.text) {
-                    return Err(PddlError::unsupported(h.span, &format!("negated {feature}")));
+                    return Err(PddlError::unsupported(
+                        h.span,
+                        &format!("negated {feature}"),
+                    ));
                 }
             }
-            out.push(Literal { positive: false, atom: atom(inner_items, inner_span, scope)? });
+            out.push(Literal {
+                positive: false,
+                atom: atom(inner_items, inner_span, scope)?,
+            });
             Ok(())
         }
         text => {
             if let Some(feature) = compound_condition(text) {
                 return Err(PddlError::unsupported(head.span, feature));
             }
-            out.push(Literal { positive: true, atom: atom(items, span, scope)? });
+            out.push(Literal {
+                positive: true,
+                atom: atom(items, span, scope)?,
+            });
             Ok(())
         }
     }
@@ -422,31 +502,54 @@ fn atom(items: &[SExpr], span: Span, scope: Scope) -> Result<Atom, PddlError> {
         .first()
         .ok_or_else(|| PddlError::syntax(span, "empty list where an atom was expected"))?;
     let head = expect_token(head, "a predicate name")?;
-    let predicate = if head.text == "=" { Name { text: head.text.clone(), span: head.span } } else { plain_name(head, "a predicate name")? };
-    let args = items[1..].iter().map(|e| term(e, scope, predicate.text == "=")).collect::<Result<_, _>>()?;
-    Ok(Atom { predicate, args, span })
+    let predicate = if head.text == "=" {
+        Name {
+            text: head.text.clone(),
+            span: head.span,
+        }
+    } else {
+        plain_name(head, "a predicate name")?
+    };
+    let args = items[1..]
+        .iter()
+        .map(|e| term(e, scope, predicate.text == "="))
+        .collect::<Result<_, _>>()?;
+    Ok(Atom {
+        predicate,
+        args,
+        span,
+    })
 }
 
 fn term(e: &SExpr, scope: Scope, in_equality: bool) -> Result<Term, PddlError> {
     match e {
         SExpr::Token(t) if t.text.starts_with('?') => {
             if scope == Scope::Goal {
-                return Err(PddlError::syntax(t.span, format!("variable `{}` outside an action", t.text))
-                    .with_label("goals and initial states name objects, not variables"));
+                return Err(PddlError::syntax(
+                    t.span,
+                    format!("variable `{}` outside an action", t.text),
+                )
+                .with_label("goals and initial states name objects, not variables"));
             }
             Ok(Term::Variable(variable(t)?))
         }
         SExpr::Token(t) => Ok(Term::Object(plain_name(t, "an object or variable")?)),
         SExpr::List { span, .. } => Err(PddlError::unsupported(
             *span,
-            if in_equality { "numeric conditions" } else { "function terms as arguments (object fluents)" },
+            if in_equality {
+                "numeric conditions"
+            } else {
+                "function terms as arguments (object fluents)"
+            },
         )),
     }
 }
 
 fn effect(e: &SExpr, out: &mut Vec<Effect>) -> Result<(), PddlError> {
     let (items, span) = as_list(e, "an effect")?;
-    let Some(head) = items.first() else { return Ok(()) };
+    let Some(head) = items.first() else {
+        return Ok(());
+    };
     let head = expect_token(head, "a predicate name or `and`/`not`/`increase`")?;
     match head.text.as_str() {
         "and" => {
@@ -462,24 +565,43 @@ fn effect(e: &SExpr, out: &mut Vec<Effect>) -> Result<(), PddlError> {
             let (inner_items, inner_span) = as_list(inner, "an atom")?;
             if let Some(SExpr::Token(h)) = inner_items.first() {
                 if matches!(h.text.as_str(), "and" | "not" | "when" | "forall") {
-                    return Err(PddlError::syntax(h.span, "`not` in an effect takes an atom")
-                        .with_label("expected a predicate name"));
+                    return Err(
+                        PddlError::syntax(h.span, "`not` in an effect takes an atom")
+                            .with_label("expected a predicate name"),
+                    );
                 }
             }
-            out.push(Effect::Delete(atom(inner_items, inner_span, Scope::Schema)?));
+            out.push(Effect::Delete(atom(
+                inner_items,
+                inner_span,
+                Scope::Schema,
+            )?));
             Ok(())
         }
         "increase" => {
             out.push(Effect::IncreaseCost(increase(&items[1..], span)?));
             Ok(())
         }
-        "when" => Err(PddlError::unsupported(head.span, "conditional effects (`when`)")),
-        "forall" => Err(PddlError::unsupported(head.span, "universal effects (`forall`)")),
-        "decrease" | "assign" | "scale-up" | "scale-down" => {
-            Err(PddlError::unsupported(head.span, &format!("numeric effects (`{}`)", head.text)))
-        }
-        "oneof" | "probabilistic" => Err(PddlError::unsupported(head.span, "non-deterministic effects")),
-        "or" | "exists" | "imply" => Err(PddlError::syntax(head.span, format!("`{}` cannot be an effect", head.text))),
+        "when" => Err(PddlError::unsupported(
+            head.span,
+            "conditional effects (`when`)",
+        )),
+        "forall" => Err(PddlError::unsupported(
+            head.span,
+            "universal effects (`forall`)",
+        )),
+        "decrease" | "assign" | "scale-up" | "scale-down" => Err(PddlError::unsupported(
+            head.span,
+            &format!("numeric effects (`{}`)", head.text),
+        )),
+        "oneof" | "probabilistic" => Err(PddlError::unsupported(
+            head.span,
+            "non-deterministic effects",
+        )),
+        "or" | "exists" | "imply" => Err(PddlError::syntax(
+            head.span,
+            format!("`{}` cannot be an effect", head.text),
+        )),
         _ => {
             let a = atom(items, span, Scope::Schema)?;
             out.push(Effect::Add(a));
@@ -490,22 +612,35 @@ fn effect(e: &SExpr, out: &mut Vec<Effect>) -> Result<(), PddlError> {
 
 fn increase(args: &[SExpr], span: Span) -> Result<CostExpr, PddlError> {
     let [target, amount] = args else {
-        return Err(PddlError::syntax(span, "`increase` takes a function and an amount"));
+        return Err(PddlError::syntax(
+            span,
+            "`increase` takes a function and an amount",
+        ));
     };
     let (t_items, t_span) = as_list(target, "`(total-cost)`")?;
     let is_total_cost = matches!(t_items, [SExpr::Token(t)] if t.text == "total-cost");
     if !is_total_cost {
-        return Err(PddlError::unsupported(t_span, "numeric fluents other than `total-cost`"));
+        return Err(PddlError::unsupported(
+            t_span,
+            "numeric fluents other than `total-cost`",
+        ));
     }
     match amount {
         SExpr::Token(t) => Ok(CostExpr::Constant(number(t)?)),
         SExpr::List { items, span } => {
             if let Some(SExpr::Token(h)) = items.first() {
                 if matches!(h.text.as_str(), "+" | "-" | "*" | "/") {
-                    return Err(PddlError::unsupported(h.span, "arithmetic in cost expressions"));
+                    return Err(PddlError::unsupported(
+                        h.span,
+                        "arithmetic in cost expressions",
+                    ));
                 }
             }
-            Ok(CostExpr::Function(function_term(items, *span, Scope::Schema)?))
+            Ok(CostExpr::Function(function_term(
+                items,
+                *span,
+                Scope::Schema,
+            )?))
         }
     }
 }
@@ -515,22 +650,36 @@ fn function_term(items: &[SExpr], span: Span, scope: Scope) -> Result<FunctionTe
         .first()
         .ok_or_else(|| PddlError::syntax(span, "empty list where a function term was expected"))?;
     let function = plain_name(expect_token(head, "a function name")?, "a function name")?;
-    let args = items[1..].iter().map(|e| term(e, scope, false)).collect::<Result<_, _>>()?;
-    Ok(FunctionTerm { function, args, span })
+    let args = items[1..]
+        .iter()
+        .map(|e| term(e, scope, false))
+        .collect::<Result<_, _>>()?;
+    Ok(FunctionTerm {
+        function,
+        args,
+        span,
+    })
 }
 
 fn number(t: &Token) -> Result<Number, PddlError> {
     if let Ok(value) = t.text.parse::<i64>() {
-        return Ok(Number { value, span: t.span });
+        return Ok(Number {
+            value,
+            span: t.span,
+        });
     }
     if t.text.parse::<f64>().is_ok() {
         return Err(PddlError::unsupported(t.span, "non-integer numbers")
             .with_help("action costs and function values must be integers"));
     }
-    Err(PddlError::syntax(t.span, format!("expected an integer, found `{}`", t.text)))
+    Err(PddlError::syntax(
+        t.span,
+        format!("expected an integer, found `{}`", t.text),
+    ))
 }
 
-fn problem(name: Name, sections: &[SExpr], whole: Span) -> Result<Problem, PddlError> {
+fn problem(name: Name, sections: &[SExpr]) -> Result<Problem, PddlError> {
+    let whole = name.span;
     let mut domain = None;
     let mut p = Problem {
         name,
@@ -551,7 +700,10 @@ fn problem(name: Name, sections: &[SExpr], whole: Span) -> Result<Problem, PddlE
                 let [n] = body else {
                     return Err(PddlError::syntax(span, "expected `(:domain NAME)`"));
                 };
-                domain = Some(plain_name(expect_token(n, "a domain name")?, "a domain name")?);
+                domain = Some(plain_name(
+                    expect_token(n, "a domain name")?,
+                    "a domain name",
+                )?);
             }
             ":requirements" => p.requirements = requirements(body)?,
             ":objects" => p.objects = typed_list(body, ItemKind::Name, "object names")?,
@@ -562,29 +714,47 @@ fn problem(name: Name, sections: &[SExpr], whole: Span) -> Result<Problem, PddlE
             }
             ":goal" => {
                 let [g] = body else {
-                    return Err(PddlError::syntax(span, "`:goal` takes exactly one condition")
-                        .with_help("join several goals with `(and ...)`"));
+                    return Err(
+                        PddlError::syntax(span, "`:goal` takes exactly one condition")
+                            .with_help("join several goals with `(and ...)`"),
+                    );
                 };
                 condition(g, &mut p.goal, Scope::Goal)?;
                 has_goal = true;
             }
             ":metric" => p.metric = Some(metric(body, span)?),
-            ":constraints" => return Err(PddlError::unsupported(head.span, "constraints (`:constraints`)")),
+            ":constraints" => {
+                return Err(PddlError::unsupported(
+                    head.span,
+                    "constraints (`:constraints`)",
+                ))
+            }
             other => {
-                return Err(PddlError::syntax(head.span, format!("unknown problem section `{other}`"))
-                    .with_label("not a problem section")
-                    .with_help(
-                        "a problem has :domain, :requirements, :objects, :init, :goal and :metric \
+                return Err(PddlError::syntax(
+                    head.span,
+                    format!("unknown problem section `{other}`"),
+                )
+                .with_label("not a problem section")
+                .with_help(
+                    "a problem has :domain, :requirements, :objects, :init, :goal and :metric \
                          sections",
-                    ))
+                ))
             }
         }
     }
     p.domain = domain.ok_or_else(|| {
-        PddlError::syntax(whole, "the problem does not name its domain").with_help("add `(:domain NAME)`")
+        PddlError::syntax(
+            whole,
+            format!("problem `{}` does not name its domain", p.name.text),
+        )
+        .with_label("no `(:domain NAME)` in this problem")
+        .with_help("add `(:domain NAME)`")
     })?;
     if !has_goal {
-        return Err(PddlError::syntax(whole, "the problem has no `:goal`").with_label("in this problem"));
+        return Err(
+            PddlError::syntax(whole, format!("problem `{}` has no `:goal`", p.name.text))
+                .with_label("no `(:goal ...)` in this problem"),
+        );
     }
     Ok(p)
 }
@@ -594,36 +764,47 @@ fn init_entry(e: &SExpr) -> Result<InitEntry, PddlError> {
     match items.first() {
         Some(SExpr::Token(h)) if h.text == "=" => {
             let [term_expr, value] = &items[1..] else {
-                return Err(PddlError::syntax(span, "expected `(= (function args) value)`"));
+                return Err(PddlError::syntax(
+                    span,
+                    "expected `(= (function args) value)`",
+                ));
             };
             let (t_items, t_span) = as_list(term_expr, "a function term")?;
             let term = function_term(t_items, t_span, Scope::Goal)?;
             let value = number(expect_token(value, "a number")?)?;
             Ok(InitEntry::FunctionValue { term, value })
         }
-        Some(SExpr::Token(h)) if h.text == "not" => Err(PddlError::semantic(
-            span,
-            "negative facts in `:init`",
-        )
-        .with_label("facts not listed are false")
-        .with_help("the initial state is closed-world: remove this entry")),
+        Some(SExpr::Token(h)) if h.text == "not" => {
+            Err(PddlError::semantic(span, "negative facts in `:init`")
+                .with_label("facts not listed are false")
+                .with_help("the initial state is closed-world: remove this entry"))
+        }
         _ => Ok(InitEntry::Fact(atom(items, span, Scope::Goal)?)),
     }
 }
 
 fn metric(body: &[SExpr], span: Span) -> Result<Metric, PddlError> {
     let [direction, expr] = body else {
-        return Err(PddlError::syntax(span, "expected `(:metric minimize (total-cost))`"));
+        return Err(PddlError::syntax(
+            span,
+            "expected `(:metric minimize (total-cost))`",
+        ));
     };
     let direction = expect_token(direction, "`minimize`")?;
     if direction.text != "minimize" {
-        return Err(PddlError::unsupported(direction.span, &format!("`{}` metrics", direction.text))
-            .with_help("only `(:metric minimize (total-cost))` is supported"));
+        return Err(PddlError::unsupported(
+            direction.span,
+            &format!("`{}` metrics", direction.text),
+        )
+        .with_help("only `(:metric minimize (total-cost))` is supported"));
     }
     match expr {
         SExpr::List { items, .. } if matches!(items.as_slice(), [SExpr::Token(t)] if t.text == "total-cost") => {
             Ok(Metric { span })
         }
-        other => Err(PddlError::unsupported(other.span(), "metrics other than `(total-cost)`")),
+        other => Err(PddlError::unsupported(
+            other.span(),
+            "metrics other than `(total-cost)`",
+        )),
     }
 }

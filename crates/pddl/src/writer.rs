@@ -24,15 +24,33 @@ impl fmt::Display for Domain {
         if !self.predicates.is_empty() {
             writeln!(f, "{INDENT}(:predicates")?;
             for (i, p) in self.predicates.iter().enumerate() {
-                let close = if i + 1 == self.predicates.len() { ")" } else { "" };
-                writeln!(f, "{INDENT}{INDENT}({}{}){close}", p.name.text, params_suffix(&p.params))?;
+                let close = if i + 1 == self.predicates.len() {
+                    ")"
+                } else {
+                    ""
+                };
+                writeln!(
+                    f,
+                    "{INDENT}{INDENT}({}{}){close}",
+                    p.name.text,
+                    params_suffix(&p.params)
+                )?;
             }
         }
         if !self.functions.is_empty() {
             writeln!(f, "{INDENT}(:functions")?;
             for (i, func) in self.functions.iter().enumerate() {
-                let close = if i + 1 == self.functions.len() { ")" } else { "" };
-                writeln!(f, "{INDENT}{INDENT}({}{}) - number{close}", func.name.text, params_suffix(&func.params))?;
+                let close = if i + 1 == self.functions.len() {
+                    ")"
+                } else {
+                    ""
+                };
+                writeln!(
+                    f,
+                    "{INDENT}{INDENT}({}{}) - number{close}",
+                    func.name.text,
+                    params_suffix(&func.params)
+                )?;
             }
         }
         for a in &self.actions {
@@ -54,9 +72,12 @@ impl fmt::Display for Problem {
         for entry in &self.init {
             match entry {
                 InitEntry::Fact(a) => writeln!(f, "{INDENT}{INDENT}{}", atom(a))?,
-                InitEntry::FunctionValue { term, value } => {
-                    writeln!(f, "{INDENT}{INDENT}(= {} {})", function_term(term), value.value)?
-                }
+                InitEntry::FunctionValue { term, value } => writeln!(
+                    f,
+                    "{INDENT}{INDENT}(= {} {})",
+                    function_term(term),
+                    value.value
+                )?,
             }
         }
         writeln!(f, "{INDENT})")?;
@@ -193,7 +214,11 @@ fn write_conjunction(f: &mut fmt::Formatter<'_>, lits: &[Literal], depth: usize)
 
 fn write_action(f: &mut fmt::Formatter<'_>, a: &Action) -> fmt::Result {
     writeln!(f, "{INDENT}(:action {}", a.name.text)?;
-    writeln!(f, "{INDENT}{INDENT}:parameters ({})", typed_list_text(&a.params).join(" "))?;
+    writeln!(
+        f,
+        "{INDENT}{INDENT}:parameters ({})",
+        typed_list_text(&a.params).join(" ")
+    )?;
     write!(f, "{INDENT}{INDENT}:precondition ")?;
     write_conjunction(f, &a.precondition, 3)?;
     writeln!(f)?;
@@ -204,7 +229,9 @@ fn write_action(f: &mut fmt::Formatter<'_>, a: &Action) -> fmt::Result {
         .map(|e| match e {
             Effect::Add(x) => atom(x),
             Effect::Delete(x) => format!("(not {})", atom(x)),
-            Effect::IncreaseCost(CostExpr::Constant(n)) => format!("(increase (total-cost) {})", n.value),
+            Effect::IncreaseCost(CostExpr::Constant(n)) => {
+                format!("(increase (total-cost) {})", n.value)
+            }
             Effect::IncreaseCost(CostExpr::Function(t)) => {
                 format!("(increase (total-cost) {})", function_term(t))
             }

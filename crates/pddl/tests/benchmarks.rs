@@ -1,6 +1,8 @@
 //! Every domain and problem file of the IPC benchmark suite parses, checks against its
 //! domain, and survives the writer: `parse(write(x)) == x`.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
+
 use std::path::Path;
 
 fn read(path: &Path) -> String {
@@ -24,15 +26,29 @@ fn round_trip(path: &Path, source: &str) {
             (w, r)
         }
     };
-    let reparsed = reparsed.unwrap_or_else(|e| panic!("{}: written form does not parse: {e}\n{written}", path.display()));
-    assert_eq!(reparsed, parsed.content, "{}: round trip changed the file", path.display());
+    let reparsed = reparsed.unwrap_or_else(|e| {
+        panic!(
+            "{}: written form does not parse: {e}\n{written}",
+            path.display()
+        )
+    });
+    assert_eq!(
+        reparsed,
+        parsed.content,
+        "{}: round trip changed the file",
+        path.display()
+    );
 }
 
 #[test]
 fn every_benchmark_file_parses_and_round_trips() {
     let suite = benchmarks::Suite::locate().unwrap();
     let files = suite.pddl_files().unwrap();
-    assert!(files.len() > 400, "expected the whole suite, found {} files", files.len());
+    assert!(
+        files.len() > 400,
+        "expected the whole suite, found {} files",
+        files.len()
+    );
     for path in &files {
         round_trip(path, &read(path));
     }

@@ -1,0 +1,43 @@
+//! The command line: arguments as parsed, before they are checked against the files.
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand};
+
+/// demoplan: planning domains from human demonstrations, and a fast optimal planner.
+#[derive(Debug, Parser)]
+#[command(name = "demoplan", version, about, max_term_width = 100)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Parse a domain and problem, check them against each other, print a summary.
+    ///
+    /// With one file: a domain is checked alone; a problem's domain is found beside it by
+    /// Fast Downward's naming rules (domain.pddl, NAME-domain.pddl, ...).
+    Check {
+        /// `[DOMAIN] PROBLEM`, or a lone domain.
+        #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+        files: Vec<PathBuf>,
+    },
+    /// Rewrite PDDL files in demoplan's canonical form (lowercase, one fact per line).
+    ///
+    /// The comment block at the top of a file is kept; comments inside the definition are
+    /// dropped, and a warning says how many.
+    Fmt {
+        /// The files to rewrite.
+        #[arg(value_name = "FILE", required = true)]
+        files: Vec<PathBuf>,
+        /// Change nothing; exit 1 if a file is not in canonical form.
+        #[arg(long, conflicts_with = "stdout")]
+        check: bool,
+        /// Print the canonical form instead of rewriting the file.
+        #[arg(long)]
+        stdout: bool,
+    },
+}

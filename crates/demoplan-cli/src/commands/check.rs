@@ -1,0 +1,112 @@
+//! `demoplan check [DOMAIN] PROBLEM`: parse, check, summarise.
+
+use std::path::{Path, PathBuf};
+
+use crate::diagnostic::Failure;
+use crate::exit::ExitCode;
+use crate::input;
+
+pub fn run(files: &[PathBuf]) -> Result<ExitCode, Failure> {
+    let (domain_path, problem_path) = match files {
+        [domain, problem] => (domain.clone(), Some(problem.clone())),
+        [single] => {
+            let source = input::read_text(single)?;
+            match pddl::parse_file(&source) {
+                Ok(parsed) if matches!(parsed.content, pddl::PddlFile::Domain(_)) => {
+                    (single.clone(), None)
+                }
+                Ok(_) => (input::find_domain_file(single)?, Some(single.clone())),
+                Err(e) => return Err(Failure::pddl(single, &source, &e)),
+            }
+        }
+        _ => return Err(Failure::plain(ExitCode::USAGE, "expected [DOMAIN] PROBLEM")),
+    };
+    let mut out = String::new();
+    match problem_path {
+        None => {
+            let domain = input::read_domain(&domain_path)?;
+            summarise_domain(&mut out, &domain_path, &domain, None);
+        }
+        Some(problem_path) => {
+            let task = input::read_task(&domain_path, &problem_path)?;
+            summarise_domain(&mut out, &domain_path, &task.domain, Some(&task.problem));
+            summarise_problem(&mut out, &problem_path, &task.problem);
+            if task.problem.domain.text != task.domain.name.text {
+                eprintln!(
+                    "warning: {} names domain `{}`, but {} defines `{}`",
+                    problem_path.display(),
+                    task.problem.domain.text,
+                    domain_path.display(),
+                    task.domain.name.text
+                );
+            }
+        }
+    }
+    print!("{out}");
+    Ok(ExitCode::SUCCESS)
+}
+
+fn line(out: &mut String, key: &str, value: impl std::fmt::Display) {
+    out.push_str(&format!("{key:<22} {value}\n"));
+}
+
+fn summarise_domain(out: &mut String, path: &Path, d: &pddl::Domain, p: Option<&pddl::Problem>) {
+    line(
+        out,
+        "domain",
+        format!("{} ({})", d.name.text, path.display()),
+    );
+    let declared: Vec<&str> = d.requirements.iter().map(|r| r.name.as_str()).collect();
+    line(
+        out,
+        "requirements declared",
+        if declared.is_empty() {
+            "(none)".into()
+        } else {
+            declared.join(" ")
+        },
+    );
+    line(out, "requirements used", d.used_requirements(p).join(" "));
+    let mut types: Vec<&str> = d.types.iter().map(|t| t.name.as_str()).collect();
+    types.sort_unstable();
+    types.dedup();
+    line(out, "types", types.len());
+    line(out, "constants", d.constants.len());
+    line(out, "predicates", d.predicates.len());
+    line(out, "functions", d.functions.len());
+    line(out, "actions", d.actions.len());
+}
+
+fn summarise_problem(out: &mut String, path: &Path, p: &pddl::Problem) {
+    line(
+        out,
+        "problem",
+        format!("{} ({})", p.name.text, path.display()),
+    );
+    line(out, "objects", p.objects.len());
+    let facts = p
+        .init
+        .iter()
+        .filter(|e| matches!(e, pddl::InitEntry::Fact(_)))
+        .count();
+    line(
+        out,
+        "init",
+        format!("{facts} facts, {} function values", p.init.len() - facts),
+    );
+    let negative = p.goal.iter().filter(|l| !l.positive).count();
+    line(
+        out,
+        "goal",
+        format!("{} literals ({negative} negative)", p.goal.len()),
+    );
+    line(
+        out,
+        "metric",
+        if p.metric.is_some() {
+            "minimize (total-cost)"
+        } else {
+            "(none)"
+        },
+    );
+}

@@ -1,0 +1,85 @@
+//! `demoplan fmt FILE...`: rewrite PDDL in canonical form.
+
+use std::path::{Path, PathBuf};
+
+use crate::diagnostic::Failure;
+use crate::exit::ExitCode;
+use crate::input;
+
+pub fn run(files: &[PathBuf], check: bool, stdout: bool) -> Result<ExitCode, Failure> {
+    let mut code = ExitCode::SUCCESS;
+    for path in files {
+        let source = input::read_text(path)?;
+        let parsed = pddl::parse_file(&source).map_err(|e| Failure::pddl(path, &source, &e))?;
+        let header = leading_comments(&source);
+        let body = match &parsed.content {
+            pddl::PddlFile::Domain(d) => d.to_string(),
+            pddl::PddlFile::Problem(p) => p.to_string(),
+        };
+        let formatted = if header.is_empty() {
+            body
+        } else {
+            format!("{header}\n{body}")
+        };
+        let header_comments = header.lines().count();
+        let dropped = parsed.comments.len().saturating_sub(header_comments);
+        if stdout {
+            print!("{formatted}");
+        } else if check {
+            if formatted != source {
+                println!("{} is not in canonical form", path.display());
+                code = ExitCode::CHECK_FAILED;
+            }
+        } else if formatted != source {
+            write_atomically(path, &formatted)?;
+        }
+        if dropped > 0 && !check {
+            eprintln!(
+                "warning: {}: {dropped} comment{} inside the definition dropped",
+                path.display(),
+                if dropped == 1 { "" } else { "s" }
+            );
+        }
+    }
+    Ok(code)
+}
+
+/// The `;` comment lines before the definition, each trimmed at the end.
+fn leading_comments(source: &str) -> String {
+    let mut out = String::new();
+    for l in source.lines() {
+        let t = l.trim();
+        if t.starts_with(';') {
+            out.push_str(t);
+            out.push('\n');
+        } else if !t.is_empty() {
+            break;
+        }
+    }
+    out
+}
+
+/// Writes through a temporary file in the same folder and a rename, so that a crash never
+/// leaves a half-written file.
+fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.demoplan-tmp-{}", std::process::id()));
+    let fail = |e: std::io::Error| {
+        Failure::plain(
+            ExitCode::CRITICAL_ERROR,
+            format!("cannot write {}: {e}", path.display()),
+        )
+    };
+    std::fs::write(&tmp, text).map_err(fail)?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        fail(e)
+    })
+}

@@ -1,0 +1,113 @@
+//! Turning library errors into what the terminal shows: file, line, column, an underline.
+
+use miette::{
+    Diagnostic, GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource, SourceSpan,
+};
+use std::fmt;
+use std::path::Path;
+
+use crate::exit::ExitCode;
+
+/// A failed command: what to print on standard error, and the exit code.
+#[derive(Debug)]
+pub struct Failure {
+    /// The exit code.
+    pub code: ExitCode,
+    /// The rendered message, ending in a newline.
+    pub text: String,
+}
+
+impl Failure {
+    /// A one-line message with no source to show.
+    pub fn plain(code: ExitCode, message: impl fmt::Display) -> Failure {
+        Failure {
+            code,
+            text: format!("error: {message}\n"),
+        }
+    }
+
+    /// An error in a PDDL file, rendered with the source line and an underline.
+    pub fn pddl(path: &Path, source: &str, error: &pddl::PddlError) -> Failure {
+        let (code, exit) = match error.kind {
+            pddl::ErrorKind::Syntax => ("pddl::syntax", ExitCode::INPUT_ERROR),
+            pddl::ErrorKind::Semantic => ("pddl::semantic", ExitCode::INPUT_ERROR),
+            pddl::ErrorKind::Unsupported => ("pddl::unsupported", ExitCode::UNSUPPORTED),
+        };
+        let diagnostic = SourceDiagnostic {
+            message: error.message.clone(),
+            code,
+            help: error.help.clone(),
+            label: error.label.clone(),
+            span: (error.span.start as usize, error.span.len()).into(),
+            source: NamedSource::new(path.display().to_string(), source.to_string()),
+        };
+        Failure {
+            code: exit,
+            text: render(&diagnostic),
+        }
+    }
+}
+
+#[derive(Debug)]
+struct SourceDiagnostic {
+    message: String,
+    code: &'static str,
+    help: Option<String>,
+    label: String,
+    span: SourceSpan,
+    source: NamedSource<String>,
+}
+
+impl fmt::Display for SourceDiagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for SourceDiagnostic {}
+
+impl Diagnostic for SourceDiagnostic {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        Some(Box::new(self.code))
+    }
+
+    fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.help
+            .as_ref()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
+    }
+
+    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
+        Some(&self.source)
+    }
+
+    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
+        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(
+            Some(self.label.clone()),
+            self.span,
+        ))))
+    }
+}
+
+/// Renders without colour unless standard error is a terminal and `NO_COLOR` is unset,
+/// at a fixed width, so that output in files and tests is stable.
+fn render(diagnostic: &dyn Diagnostic) -> String {
+    use std::io::IsTerminal;
+    let colour = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
+    let theme = if colour {
+        GraphicalTheme::unicode()
+    } else {
+        GraphicalTheme::unicode_nocolor()
+    };
+    let handler = GraphicalReportHandler::new_themed(theme)
+        .with_width(100)
+        .with_context_lines(1);
+    let mut out = String::new();
+    if handler.render_report(&mut out, diagnostic).is_err() {
+        out = format!("error: {diagnostic}");
+    }
+    if !out.ends_with('\n') {
+        out.push('\n');
+    }
+    out
+}

@@ -1,0 +1,23 @@
+//! Exit codes. Planning commands use Fast Downward's table so that scripts written for
+//! Fast Downward read demoplan's results; other commands use the same codes for the same
+//! kinds of failure. The README lists them.
+
+/// A process exit code.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ExitCode(pub i32);
+
+impl ExitCode {
+    /// Success (for `plan`: a plan was found).
+    pub const SUCCESS: ExitCode = ExitCode(0);
+    /// A check that found a difference: `fmt --check` on a file that is not canonical.
+    pub const CHECK_FAILED: ExitCode = ExitCode(1);
+    /// Fast Downward's TRANSLATE_INPUT_ERROR: the PDDL is malformed or inconsistent.
+    pub const INPUT_ERROR: ExitCode = ExitCode(31);
+    /// Fast Downward's SEARCH_UNSUPPORTED: valid PDDL outside the supported fragment.
+    pub const UNSUPPORTED: ExitCode = ExitCode(34);
+    /// Fast Downward's DRIVER_CRITICAL_ERROR: an I/O failure writing output.
+    pub const CRITICAL_ERROR: ExitCode = ExitCode(35);
+    /// Fast Downward's DRIVER_INPUT_ERROR: a bad command line, a missing input file, no
+    /// domain file found by the naming rules.
+    pub const USAGE: ExitCode = ExitCode(36);
+}

@@ -1,0 +1,97 @@
+//! Reading input files named on the command line.
+
+use std::path::{Path, PathBuf};
+
+use crate::diagnostic::Failure;
+use crate::exit::ExitCode;
+
+/// Reads a text file; a missing or unreadable file is a command line error (exit 36).
+pub fn read_text(path: &Path) -> Result<String, Failure> {
+    std::fs::read(path)
+        .map_err(|e| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!("cannot read {}: {e}", path.display()),
+            )
+        })
+        .and_then(|bytes| {
+            String::from_utf8(bytes).map_err(|e| {
+                Failure::plain(
+                    ExitCode::INPUT_ERROR,
+                    format!(
+                        "{}: not UTF-8 text (byte {})",
+                        path.display(),
+                        e.utf8_error().valid_up_to()
+                    ),
+                )
+            })
+        })
+}
+
+/// Finds the domain file of a problem by Fast Downward's naming rules: `domain.pddl`,
+/// `NAME-domain.pddl`, the first three characters of the problem's name followed by
+/// `-domain.pddl` (airport's `p01-domain.pddl`), `domain_NAME.pddl`, `domain-NAME.pddl`,
+/// all beside the problem.
+pub fn find_domain_file(problem: &Path) -> Result<PathBuf, Failure> {
+    let dir = problem.parent().unwrap_or(Path::new(""));
+    let name = problem
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let stem = problem
+        .file_stem()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let suffix = problem
+        .extension()
+        .map(|e| format!(".{}", e.to_string_lossy()))
+        .unwrap_or_default();
+    let prefix: String = name.chars().take(3).collect();
+    let candidates = [
+        "domain.pddl".to_string(),
+        format!("{stem}-domain{suffix}"),
+        format!("{prefix}-domain.pddl"),
+        format!("domain_{name}"),
+        format!("domain-{name}"),
+    ];
+    candidates
+        .iter()
+        .map(|c| dir.join(c))
+        .find(|p| p.is_file())
+        .ok_or_else(|| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!(
+                    "could not find the domain file of {} using the naming rules (tried {}); \
+                     name it on the command line",
+                    problem.display(),
+                    candidates.join(", ")
+                ),
+            )
+        })
+}
+
+/// A domain and problem read, parsed and checked against each other.
+#[derive(Debug)]
+pub struct Task {
+    /// The domain.
+    pub domain: pddl::Domain,
+    /// The problem.
+    pub problem: pddl::Problem,
+}
+
+/// Reads and checks a domain and problem.
+pub fn read_task(domain_path: &Path, problem_path: &Path) -> Result<Task, Failure> {
+    let domain = read_domain(domain_path)?;
+    let problem_source = read_text(problem_path)?;
+    let problem = pddl::parse_problem(&problem_source)
+        .and_then(|p| pddl::check_problem(&domain, &p).map(|()| p))
+        .map_err(|e| Failure::pddl(problem_path, &problem_source, &e))?;
+    Ok(Task { domain, problem })
+}
+
+/// Reads and checks a domain.
+pub fn read_domain(path: &Path) -> Result<pddl::Domain, Failure> {
+    let source = read_text(path)?;
+    pddl::parse_domain(&source).map_err(|e| Failure::pddl(path, &source, &e))
+}

@@ -1,0 +1,1 @@
+//! Fast Downward's `output.sas` format.

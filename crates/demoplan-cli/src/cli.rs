@@ -40,4 +40,18 @@ pub enum Command {
         #[arg(long)]
         stdout: bool,
     },
+    /// Validate plans against a domain and problem, in the manner of VAL's `validate`.
+    ///
+    /// For each plan: whether every step is applicable, whether the goal holds at the end,
+    /// and the plan's value (total-cost, or the plan length without a metric). The exit
+    /// status is the number of invalid plans.
+    Validate {
+        /// The domain file.
+        domain: PathBuf,
+        /// The problem file.
+        problem: PathBuf,
+        /// Plan files: one action `(name arg1 arg2)` per line; `;` starts a comment.
+        #[arg(value_name = "PLAN", required = true)]
+        plans: Vec<PathBuf>,
+    },
 }

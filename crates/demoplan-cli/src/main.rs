@@ -46,5 +46,10 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             check,
             stdout,
         } => commands::fmt::run(&files, check, stdout),
+        cli::Command::Validate {
+            domain,
+            problem,
+            plans,
+        } => commands::validate::run(&domain, &problem, &plans),
     }
 }

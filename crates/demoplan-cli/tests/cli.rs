@@ -235,3 +235,96 @@ fn tempdir(name: &str) -> PathBuf {
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
+
+/// An optimal plan for `examples/cubes/tower-3.pddl`, as Fast Downward writes it.
+const TOWER_PLAN: &str = "(reach left c2)\n(take left c2 table)\n(stack left c2 c1)\n\
+                          (reach left c3)\n(take left c3 table)\n(stack left c3 c2)\n\
+                          ; cost = 6 (general cost)\n";
+
+/// Runs `demoplan validate` on the example cube task with the given plan files, written
+/// into a fresh folder that is the working directory (so the output names them briefly).
+fn validate_cubes(test: &str, plans: &[(&str, &str)]) -> Output {
+    let tmp = tempdir(test);
+    for (name, text) in plans {
+        std::fs::write(tmp.join(name), text).unwrap();
+    }
+    let cubes = workspace().join("examples/cubes");
+    demoplan()
+        .current_dir(&tmp)
+        .arg("validate")
+        .arg(cubes.join("domain.pddl"))
+        .arg(cubes.join("tower-3.pddl"))
+        .args(plans.iter().map(|(name, _)| name))
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn validate_accepts_a_valid_plan_with_vals_wording() {
+    let out = validate_cubes("validate-valid", &[("tower.plan", TOWER_PLAN)]);
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+}
+
+#[test]
+fn validate_exit_status_is_the_number_of_invalid_plans() {
+    let steps: Vec<&str> = TOWER_PLAN.lines().collect();
+    let goal_missed = steps[..3].join("\n");
+    let skipped_take = format!("{}\n{}", steps[0], steps[2]);
+    let out = validate_cubes(
+        "validate-invalid",
+        &[
+            ("tower.plan", TOWER_PLAN),
+            ("skipped-take.plan", &skipped_take),
+            ("half-tower.plan", &goal_missed),
+            ("empty.plan", "; nothing\n"),
+            ("wrong-type.plan", "(reach c1 left)\n"),
+            (
+                "malformed.plan",
+                ";; header\n(reach left c2)\nstack left c2 c1\n",
+            ),
+        ],
+    );
+    assert_eq!(out.status.code(), Some(5), "{}", transcript(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(stdout.matches("Plan valid").count(), 1);
+    assert_eq!(stdout.matches("Plan invalid").count(), 5);
+    insta::assert_snapshot!(transcript(&out));
+}
+
+#[test]
+fn validate_input_errors_use_the_pddl_exit_codes() {
+    let cubes = workspace().join("examples/cubes");
+    // A missing plan file is a command line mistake, found before any plan is judged.
+    let tmp = tempdir("validate-errors");
+    std::fs::write(tmp.join("tower.plan"), TOWER_PLAN).unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("validate")
+        .arg(cubes.join("domain.pddl"))
+        .arg(cubes.join("tower-3.pddl"))
+        .args(["tower.plan", "missing.plan"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    assert!(out.stdout.is_empty(), "{}", transcript(&out));
+    // Malformed PDDL: 31, with the diagnostic of `check`.
+    std::fs::write(tmp.join("problem.pddl"), "(define (problem p) (:domain d)").unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("validate")
+        .arg(cubes.join("domain.pddl"))
+        .args(["problem.pddl", "tower.plan"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("[problem.pddl:"));
+    // No plan at all: the usage error of clap, 36.
+    let out = demoplan()
+        .arg("validate")
+        .arg(cubes.join("domain.pddl"))
+        .arg(cubes.join("tower-3.pddl"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+}

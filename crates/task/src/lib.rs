@@ -180,7 +180,10 @@ impl Task {
         self.check_facts(&init, "initial state")?;
         self.check_partial(&self.goal, "goal")?;
         for op in &self.operators {
-            self.check_partial(&op.preconditions, &format!("operator `{}` preconditions", op.name))?;
+            self.check_partial(
+                &op.preconditions,
+                &format!("operator `{}` preconditions", op.name),
+            )?;
             self.check_partial(&op.effects, &format!("operator `{}` effects", op.name))?;
         }
         for (i, group) in self.mutexes.iter().enumerate() {
@@ -191,7 +194,10 @@ impl Task {
 
     fn check_facts(&self, facts: &[Fact], context: &str) -> Result<(), TaskError> {
         for f in facts {
-            let ok = self.variables.get(f.var.index()).is_some_and(|v| f.value < v.domain_size());
+            let ok = self
+                .variables
+                .get(f.var.index())
+                .is_some_and(|v| f.value < v.domain_size());
             if !ok {
                 return Err(TaskError::FactOutOfRange {
                     context: context.to_string(),
@@ -206,7 +212,9 @@ impl Task {
     fn check_partial(&self, facts: &[Fact], context: &str) -> Result<(), TaskError> {
         self.check_facts(facts, context)?;
         if facts.windows(2).any(|w| w[0].var >= w[1].var) {
-            return Err(TaskError::Unsorted { context: context.to_string() });
+            return Err(TaskError::Unsorted {
+                context: context.to_string(),
+            });
         }
         Ok(())
     }
@@ -218,7 +226,9 @@ impl Task {
 
     /// True if the operator's preconditions hold in `state`.
     pub fn is_applicable(&self, op: &Operator, state: &[u32]) -> bool {
-        op.preconditions.iter().all(|f| state[f.var.index()] == f.value)
+        op.preconditions
+            .iter()
+            .all(|f| state[f.var.index()] == f.value)
     }
 
     /// The cost search uses for `op`: its cost, or 1 without action costs.

@@ -1,0 +1,378 @@
+//! Eager A* with reopening.
+
+use std::time::{Duration, Instant};
+
+use task::{OpId, Task, TaskError};
+
+use crate::heuristic::Heuristic;
+use crate::open_list::OpenList;
+use crate::plan::Plan;
+use crate::state::{StateId, StatePacker, StateRegistry};
+use crate::successor::SuccessorGenerator;
+
+/// How often (in open-list pops) the limits are checked.
+const CHECK_INTERVAL: u32 = 64;
+
+/// When to give up. The default has no limits.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct SearchLimits {
+    /// Stop with [`Outcome::TimeLimit`] once this instant has passed.
+    pub deadline: Option<Instant>,
+    /// Stop with [`Outcome::MemoryLimit`] once memory use exceeds this many bytes.
+    pub memory_limit_bytes: Option<u64>,
+    /// The process's memory use in bytes (e.g. a counting allocator's reading). Without
+    /// it the search counts the bytes of its own main structures (states, per-state
+    /// information, open list), which leaves out the task and the heuristic.
+    pub memory_usage: Option<fn() -> u64>,
+}
+
+/// Counters reported when the search enters a new, higher f-layer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Progress {
+    /// The new f value (g + h of the state about to be expanded).
+    pub f: u64,
+    /// States expanded before this one.
+    pub expanded: u64,
+    /// States evaluated by the heuristic so far.
+    pub evaluated: u64,
+    /// Successors generated so far.
+    pub generated: u64,
+}
+
+/// What the search counted, in Fast Downward's terms.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Statistics {
+    /// States expanded (taken from the open list and closed; includes the goal state).
+    pub expanded: u64,
+    /// States evaluated by the heuristic (each registered state once).
+    pub evaluated: u64,
+    /// Successors generated (one per applicable operator of an expanded state).
+    pub generated: u64,
+    /// Closed states reopened because a cheaper path to them was found.
+    pub reopened: u64,
+    /// States the heuristic recognised as dead ends.
+    pub dead_ends: u64,
+    /// `expanded` when the last f-layer began ("Expanded until last jump").
+    pub expanded_until_last_jump: u64,
+    /// `evaluated` when the last f-layer began.
+    pub evaluated_until_last_jump: u64,
+    /// `generated` when the last f-layer began.
+    pub generated_until_last_jump: u64,
+    /// The heuristic value of the initial state (`None`: a dead end).
+    pub initial_h: Option<u64>,
+    /// Wall-clock time of the search, including building its structures.
+    pub search_time: Duration,
+    /// Distinct states registered.
+    pub registered_states: u64,
+}
+
+/// How a search ended.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Outcome {
+    /// An optimal plan (given an admissible heuristic).
+    Solved(Plan),
+    /// The search space was exhausted: no plan exists.
+    Unsolvable,
+    /// The deadline passed.
+    TimeLimit,
+    /// The memory limit was exceeded, or the number of states outgrew 32-bit ids.
+    MemoryLimit,
+}
+
+/// The outcome of a search and what it counted on the way.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SearchResult {
+    /// How it ended.
+    pub outcome: Outcome,
+    /// The counters.
+    pub statistics: Statistics,
+}
+
+/// A search that could not start.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum SearchError {
+    /// The task breaks its invariants.
+    #[error("invalid task: {0}")]
+    InvalidTask(#[from] TaskError),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Status {
+    Open,
+    Closed,
+    DeadEnd,
+}
+
+const NO_OP: OpId = OpId(u32::MAX);
+
+/// Per-operator data in the forms the inner loop wants.
+struct Operators {
+    cost: Vec<u64>,
+    /// Effects on packed states: `(word, bits to clear, bits to set)`, one per touched word.
+    packed_start: Vec<u32>,
+    packed: Vec<(u32, u64, u64)>,
+    /// Effects on unpacked states: `(variable, value)`.
+    unpacked_start: Vec<u32>,
+    unpacked: Vec<(u32, u32)>,
+}
+
+impl Operators {
+    fn new(task: &Task, packer: &StatePacker) -> Operators {
+        let mut ops = Operators {
+            cost: Vec::with_capacity(task.operators.len()),
+            packed_start: vec![0],
+            packed: Vec::new(),
+            unpacked_start: vec![0],
+            unpacked: Vec::new(),
+        };
+        let mut writes = Vec::new();
+        for op in &task.operators {
+            ops.cost.push(task.cost(op));
+            writes.clear();
+            writes.extend(op.effects.iter().map(|f| packer.write_mask(f.var.index(), f.value)));
+            writes.sort_by_key(|w| w.0);
+            let begin = ops.packed.len();
+            for &(word, clear, set) in &writes {
+                match ops.packed[begin..].last_mut() {
+                    Some(last) if last.0 == word => {
+                        last.1 |= clear;
+                        last.2 |= set;
+                    }
+                    _ => ops.packed.push((word, clear, set)),
+                }
+            }
+            ops.packed_start.push(ops.packed.len() as u32);
+            ops.unpacked.extend(op.effects.iter().map(|f| (f.var.0, f.value)));
+            ops.unpacked_start.push(ops.unpacked.len() as u32);
+        }
+        ops
+    }
+
+    #[inline]
+    fn apply_packed(&self, op: usize, packed: &mut [u64]) {
+        let range = self.packed_start[op] as usize..self.packed_start[op + 1] as usize;
+        for &(word, clear, set) in &self.packed[range] {
+            let w = &mut packed[word as usize];
+            *w = (*w & !clear) | set;
+        }
+    }
+
+    #[inline]
+    fn apply_unpacked(&self, op: usize, state: &mut [u32]) {
+        let range = self.unpacked_start[op] as usize..self.unpacked_start[op + 1] as usize;
+        for &(var, value) in &self.unpacked[range] {
+            state[var as usize] = value;
+        }
+    }
+}
+
+/// Per-state search information, in parallel vectors indexed by [`StateId`].
+struct StateInfo {
+    g: Vec<u64>,
+    h: Vec<u64>,
+    parent: Vec<StateId>,
+    creating_op: Vec<OpId>,
+    status: Vec<Status>,
+}
+
+impl StateInfo {
+    fn push(&mut self, g: u64, h: u64, parent: StateId, op: OpId, status: Status) {
+        self.g.push(g);
+        self.h.push(h);
+        self.parent.push(parent);
+        self.creating_op.push(op);
+        self.status.push(status);
+    }
+
+    fn memory_bytes(&self) -> usize {
+        self.g.capacity() * 8
+            + self.h.capacity() * 8
+            + self.parent.capacity() * 4
+            + self.creating_op.capacity() * 4
+            + self.status.capacity()
+    }
+
+    /// The operators on the path from the initial state to `goal`, in order, following
+    /// parent links; O(plan length).
+    fn extract_plan(&self, goal: StateId) -> Vec<OpId> {
+        let mut ops = Vec::new();
+        let mut state = goal;
+        // Parent links form a tree rooted at the initial state; the bound only guards
+        // against a broken invariant turning into an endless loop.
+        for _ in 0..self.g.len() {
+            let op = self.creating_op[state.index()];
+            if op == NO_OP {
+                break;
+            }
+            ops.push(op);
+            state = self.parent[state.index()];
+        }
+        ops.reverse();
+        ops
+    }
+}
+
+/// Optimal eager A* search from the initial state of `task` to a goal state.
+///
+/// States are kept in an open list ordered by f = g + h, ties broken by lower h and then
+/// first in, first out. The goal test happens when a state is expanded, so with an
+/// *admissible* heuristic the plan returned is optimal; the heuristic need not be
+/// *consistent*: a closed state reached again by a cheaper path is reopened. States the
+/// heuristic calls dead ends are pruned. Zero-cost operators are fine. Each registered
+/// state is evaluated once and its value cached.
+///
+/// Time: O(expansions * (successor generation + branching * (state words + heuristic)));
+/// memory: O(registered states * (state words + 25 bytes)). The result is deterministic:
+/// the same task and heuristic give the same plan and the same counts.
+///
+/// Limits are checked every few dozen expansions; `observer` is called at each new,
+/// higher f-layer (including the first).
+pub fn astar<H: Heuristic + ?Sized>(
+    task: &Task,
+    heuristic: &mut H,
+    limits: &SearchLimits,
+    mut observer: Option<&mut dyn FnMut(Progress)>,
+) -> Result<SearchResult, SearchError> {
+    let start = Instant::now();
+    task.validate()?;
+    let packer = StatePacker::for_task(task);
+    let words = packer.words_per_state();
+    let mut registry = StateRegistry::new(words);
+    let mut generator = SuccessorGenerator::new(task);
+    let ops = Operators::new(task, &packer);
+    let mut info = StateInfo { g: vec![], h: vec![], parent: vec![], creating_op: vec![], status: vec![] };
+    let mut open = OpenList::new();
+    let mut stats = Statistics::default();
+
+    let n = task.variables.len();
+    let mut state = vec![0u32; n];
+    let mut child = vec![0u32; n];
+    let mut parent_packed = vec![0u64; words];
+    let mut child_packed = vec![0u64; words];
+    let mut applicable: Vec<OpId> = Vec::new();
+
+    let finish = |outcome: Outcome, mut stats: Statistics, registry: &StateRegistry| {
+        stats.search_time = start.elapsed();
+        stats.registered_states = registry.len() as u64;
+        Ok(SearchResult { outcome, statistics: stats })
+    };
+
+    packer.pack(&task.initial_state, &mut child_packed);
+    let Some((init, _)) = registry.insert(&child_packed) else {
+        return finish(Outcome::MemoryLimit, stats, &registry);
+    };
+    stats.evaluated = 1;
+    stats.initial_h = heuristic.evaluate(&task.initial_state);
+    match stats.initial_h {
+        None => {
+            stats.dead_ends = 1;
+            info.push(0, 0, init, NO_OP, Status::DeadEnd);
+            return finish(Outcome::Unsolvable, stats, &registry);
+        }
+        Some(h) => {
+            info.push(0, h, init, NO_OP, Status::Open);
+            open.push(h, h, init);
+        }
+    }
+
+    let mut layer: Option<u64> = None;
+    let mut until_check = 1; // Check before the first expansion, then every interval.
+    loop {
+        until_check -= 1;
+        if until_check == 0 {
+            until_check = CHECK_INTERVAL;
+            if let Some(outcome) = check_limits(limits, || {
+                registry.memory_bytes() + info.memory_bytes() + open.memory_bytes()
+            }) {
+                return finish(outcome, stats, &registry);
+            }
+        }
+        let Some((f, h, id)) = open.pop() else {
+            return finish(Outcome::Unsolvable, stats, &registry);
+        };
+        let s = id.index();
+        if info.status[s] != Status::Open || info.g[s].saturating_add(h) != f {
+            continue; // A stale entry: expanded already, or since reached more cheaply.
+        }
+        if layer.is_none_or(|l| f > l) {
+            layer = Some(f);
+            stats.expanded_until_last_jump = stats.expanded;
+            stats.evaluated_until_last_jump = stats.evaluated;
+            stats.generated_until_last_jump = stats.generated;
+            if let Some(observe) = observer.as_mut() {
+                observe(Progress {
+                    f,
+                    expanded: stats.expanded,
+                    evaluated: stats.evaluated,
+                    generated: stats.generated,
+                });
+            }
+        }
+        info.status[s] = Status::Closed;
+        stats.expanded += 1;
+        parent_packed.copy_from_slice(registry.get(id));
+        packer.unpack(&parent_packed, &mut state);
+        if task.is_goal(&state) {
+            let plan = Plan { operators: info.extract_plan(id), cost: info.g[s] };
+            return finish(Outcome::Solved(plan), stats, &registry);
+        }
+        let g = info.g[s];
+        generator.applicable(&state, &mut applicable);
+        for &op in &applicable {
+            stats.generated += 1;
+            let o = op.index();
+            child_packed.copy_from_slice(&parent_packed);
+            ops.apply_packed(o, &mut child_packed);
+            let child_g = g.saturating_add(ops.cost[o]);
+            let Some((child_id, is_new)) = registry.insert(&child_packed) else {
+                return finish(Outcome::MemoryLimit, stats, &registry);
+            };
+            if is_new {
+                child.copy_from_slice(&state);
+                ops.apply_unpacked(o, &mut child);
+                stats.evaluated += 1;
+                match heuristic.evaluate(&child) {
+                    None => {
+                        stats.dead_ends += 1;
+                        info.push(child_g, 0, id, op, Status::DeadEnd);
+                    }
+                    Some(child_h) => {
+                        info.push(child_g, child_h, id, op, Status::Open);
+                        open.push(child_g.saturating_add(child_h), child_h, child_id);
+                    }
+                }
+            } else {
+                let c = child_id.index();
+                if info.status[c] == Status::DeadEnd || child_g >= info.g[c] {
+                    continue;
+                }
+                if info.status[c] == Status::Closed {
+                    stats.reopened += 1;
+                }
+                info.g[c] = child_g;
+                info.parent[c] = id;
+                info.creating_op[c] = op;
+                info.status[c] = Status::Open;
+                let child_h = info.h[c];
+                open.push(child_g.saturating_add(child_h), child_h, child_id);
+            }
+        }
+    }
+}
+
+/// The outcome the limits call for, if any.
+fn check_limits(limits: &SearchLimits, own_bytes: impl FnOnce() -> usize) -> Option<Outcome> {
+    if limits.deadline.is_some_and(|d| Instant::now() >= d) {
+        return Some(Outcome::TimeLimit);
+    }
+    if let Some(limit) = limits.memory_limit_bytes {
+        let used = match limits.memory_usage {
+            Some(read) => read(),
+            None => own_bytes() as u64,
+        };
+        if used > limit {
+            return Some(Outcome::MemoryLimit);
+        }
+    }
+    None
+}

@@ -1,0 +1,92 @@
+//! The heuristic interface and the blind heuristic.
+
+use task::{Fact, Task};
+
+/// An estimate of the cost from a state to the goal.
+///
+/// The search calls [`evaluate`](Self::evaluate) once per newly registered state, with
+/// the state unpacked (one value per variable, in the order of [`Task::variables`]) and
+/// caches the value. For A* to return optimal plans the estimate must be *admissible*
+/// (never above the true cost); it need not be *consistent*, since the search reopens
+/// states reached again more cheaply. `None` says the goal cannot be reached from the
+/// state (a dead end), which must be true: the search prunes such states.
+///
+/// Implementations keep their scratch buffers between calls, which is why the receiver
+/// is `&mut self`.
+pub trait Heuristic {
+    /// The name used in logs, as in the search string: `blind`, `hmax`.
+    fn name(&self) -> &str;
+
+    /// The estimate for `state`, or `None` if the state is a dead end.
+    fn evaluate(&mut self, state: &[u32]) -> Option<u64>;
+}
+
+impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
+    fn name(&self) -> &str {
+        (**self).name()
+    }
+
+    fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+        (**self).evaluate(state)
+    }
+}
+
+/// The blind heuristic: 0 on goal states, otherwise the cheapest operator cost (0 if the
+/// task has no operators). Admissible and consistent; O(goal facts) per state.
+#[derive(Debug, Clone)]
+pub struct Blind {
+    goal: Vec<Fact>,
+    min_cost: u64,
+}
+
+impl Blind {
+    /// The blind heuristic for `task` (costs as [`Task::cost`] gives them).
+    pub fn new(task: &Task) -> Blind {
+        let min_cost = task.operators.iter().map(|op| task.cost(op)).min().unwrap_or(0);
+        Blind { goal: task.goal.clone(), min_cost }
+    }
+}
+
+impl Heuristic for Blind {
+    fn name(&self) -> &str {
+        "blind"
+    }
+
+    #[inline]
+    fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+        let goal = self.goal.iter().all(|f| state.get(f.var.index()) == Some(&f.value));
+        Some(if goal { 0 } else { self.min_cost })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use task::{Operator, VarId, Variable};
+
+    #[test]
+    fn blind_is_zero_on_goals_and_min_cost_elsewhere() {
+        let op = |cost| Operator {
+            name: "o".into(),
+            preconditions: vec![],
+            effects: vec![Fact::new(VarId(0), 0)],
+            cost,
+        };
+        let mut task = Task {
+            variables: vec![Variable::binary("a")],
+            mutexes: vec![],
+            initial_state: vec![1],
+            goal: vec![Fact::new(VarId(0), 0)],
+            operators: vec![op(5), op(3), op(7)],
+            use_costs: true,
+        };
+        let mut blind = Blind::new(&task);
+        assert_eq!(blind.name(), "blind");
+        assert_eq!(blind.evaluate(&[0]), Some(0));
+        assert_eq!(blind.evaluate(&[1]), Some(3));
+        task.use_costs = false;
+        assert_eq!(Blind::new(&task).evaluate(&[1]), Some(1));
+        task.operators.clear();
+        assert_eq!(Blind::new(&task).evaluate(&[1]), Some(0));
+    }
+}

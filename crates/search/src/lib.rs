@@ -1,0 +1,87 @@
+//! Optimal search over finite-domain tasks: eager A* with admissible heuristics.
+//!
+//! The crate consumes a [`task::Task`] and knows nothing of PDDL. Its parts:
+//!
+//! - [`state`]: states packed into `u64` words ([`StatePacker`]), stored once in an arena
+//!   with a hash table of dense [`StateId`]s ([`StateRegistry`]);
+//! - [`SuccessorGenerator`]: a decision tree over variables that finds applicable
+//!   operators without testing every operator;
+//! - [`Heuristic`]: the interface heuristics implement, with [`Blind`] and [`HMax`];
+//! - [`astar`]: eager A* with reopening, returning a [`SearchResult`] (an [`Outcome`] and
+//!   Fast Downward-style [`Statistics`]) under [`SearchLimits`], reporting each new
+//!   f-layer to an optional observer;
+//! - [`parse_search`] and [`alias`]: Fast Downward-style search strings
+//!   (`astar(hmax())`, `seq-opt-lmcut`), and [`search`] to run one;
+//! - [`replay`]: applies a plan to the initial state, checking every step.
+//!
+//! The library never prints and does no I/O; results are values.
+//!
+//! ```
+//! use search::{parse_search, replay, search, Outcome, SearchLimits};
+//! use task::{Fact, Operator, Task, VarId, Variable};
+//!
+//! // A robot at position 0, 1 or 2 on a line must reach 2.
+//! let step = |from: u32, to: u32| Operator {
+//!     name: format!("move p{from} p{to}"),
+//!     preconditions: vec![Fact::new(VarId(0), from)],
+//!     effects: vec![Fact::new(VarId(0), to)],
+//!     cost: 1,
+//! };
+//! let task = Task {
+//!     variables: vec![Variable {
+//!         name: "at".into(),
+//!         value_names: vec!["p0".into(), "p1".into(), "p2".into()],
+//!     }],
+//!     mutexes: vec![],
+//!     initial_state: vec![0],
+//!     goal: vec![Fact::new(VarId(0), 2)],
+//!     operators: vec![step(0, 1), step(1, 0), step(1, 2), step(2, 1)],
+//!     use_costs: false,
+//! };
+//! let config = parse_search("astar(hmax())")?;
+//! let mut layers = Vec::new();
+//! let result = search(&task, &config, &SearchLimits::default(), Some(&mut |p| layers.push(p.f)))?;
+//! let Outcome::Solved(plan) = result.outcome else { panic!("solvable") };
+//! assert_eq!(plan.cost, 2);
+//! let names: Vec<&str> = plan.operators.iter().map(|op| task.operators[op.index()].name.as_str()).collect();
+//! assert_eq!(names, ["move p0 p1", "move p1 p2"]);
+//! assert!(task.is_goal(&replay(&task, &plan.operators)?));
+//! assert_eq!(result.statistics.initial_h, Some(2)); // h^max is exact on a line
+//! assert_eq!(layers, [2]); // one f-layer: A* went straight to the goal
+//! assert_eq!(result.statistics.expanded, 3);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod astar;
+mod config;
+mod heuristic;
+mod hmax;
+mod open_list;
+mod plan;
+pub mod state;
+mod successor;
+
+pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
+pub use config::{
+    alias, parse_search, ConfigError, Engine, HeuristicConfig, SearchConfig, ALIASES, HEURISTICS,
+    PLANNED_HEURISTICS, SEARCH_ENGINES,
+};
+pub use heuristic::{Blind, Heuristic};
+pub use hmax::HMax;
+pub use plan::{replay, Plan, ReplayError};
+pub use state::{StateId, StatePacker, StateRegistry};
+pub use successor::SuccessorGenerator;
+
+/// Runs the search `config` describes on `task`: builds its heuristic and calls the
+/// engine ([`astar`]). Fails only if the task is invalid.
+pub fn search(
+    task: &task::Task,
+    config: &SearchConfig,
+    limits: &SearchLimits,
+    observer: Option<&mut dyn FnMut(Progress)>,
+) -> Result<SearchResult, SearchError> {
+    let mut heuristic = config.heuristic.build(task)?;
+    match config.engine {
+        Engine::AStar => astar(task, &mut heuristic, limits, observer),
+    }
+}

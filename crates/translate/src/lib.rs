@@ -1,0 +1,131 @@
+//! Translation from PDDL to a finite-domain planning task.
+//!
+//! 1. [`model`]: names resolved to indices, predicates split into static and fluent,
+//!    parameter types turned into object lists.
+//! 2. [`ground`]: relaxed reachability instantiates only reachable actions; static facts,
+//!    equality and costs are evaluated and compiled away.
+//! 3. [`invariants`]: mutex groups by invariant synthesis.
+//! 4. [`sas`]: groups become multi-valued variables, the rest binary; variables that
+//!    cannot influence the goal are removed.
+//!
+//! A goal unreachable even in the relaxation is reported as [`Translation::Unsolvable`]
+//! at once. The crate knows nothing of search.
+//!
+//! ```
+//! let domain = pddl::parse_domain(
+//!     "(define (domain d) (:predicates (at ?x) (link ?x ?y))
+//!        (:action go :parameters (?x ?y) :precondition (and (at ?x) (link ?x ?y))
+//!          :effect (and (at ?y) (not (at ?x)))))",
+//! )?;
+//! let problem = pddl::parse_problem(
+//!     "(define (problem p) (:domain d) (:objects a b c)
+//!        (:init (at a) (link a b) (link b c)) (:goal (at c)))",
+//! )?;
+//! let translate::Translation::Task(t) = translate::translate(&domain, &problem)? else {
+//!     panic!("solvable")
+//! };
+//! // `at` is one variable with three values; the static `link` is compiled away.
+//! assert_eq!(t.task.variables.len(), 1);
+//! assert_eq!(t.task.operators.len(), 2);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod ground;
+mod invariants;
+mod model;
+mod sas;
+
+/// What translation can fail on, beyond what the PDDL checker already rejects.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum TranslateError {
+    /// An action's cost uses a function value that `:init` does not set.
+    #[error("action `{action}` costs {term}, but :init gives {term} no value")]
+    MissingFunctionValue {
+        /// The ground function term.
+        term: String,
+        /// The action schema.
+        action: String,
+    },
+    /// A cost function value is negative.
+    #[error("{term} = {value} is a negative action cost")]
+    NegativeCost {
+        /// The ground function term.
+        term: String,
+        /// Its value.
+        value: i64,
+    },
+    /// An action's cost does not fit in 64 bits.
+    #[error("an action cost exceeds 2^64 - 1")]
+    CostOverflow,
+    /// A broken assumption inside the translator: a bug, reported rather than panicking.
+    #[error("internal translator error: {0}")]
+    Internal(String),
+}
+
+/// Sizes of each stage, for logs (Fast Downward's translator prints the like).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct TranslateStats {
+    /// Relaxed-reachable atoms, static ones included.
+    pub reachable_atoms: usize,
+    /// Reachable fluent atoms.
+    pub fluent_atoms: usize,
+    /// Ground actions instantiated.
+    pub ground_actions: usize,
+    /// Mutex groups found by invariant synthesis.
+    pub mutex_groups: usize,
+    /// Variables before goal-irrelevant ones were removed.
+    pub variables_before_relevance: usize,
+}
+
+/// A translated task with statistics.
+#[derive(Debug, Clone)]
+pub struct TranslatedTask {
+    /// The finite-domain task.
+    pub task: task::Task,
+    /// Sizes.
+    pub stats: TranslateStats,
+}
+
+/// The result of translation.
+#[derive(Debug, Clone)]
+pub enum Translation {
+    /// A task to search.
+    Task(TranslatedTask),
+    /// The goal cannot be reached even when deletes are ignored.
+    Unsolvable {
+        /// Why, in words.
+        reason: String,
+        /// Sizes up to the point of the verdict.
+        stats: TranslateStats,
+    },
+}
+
+/// Translates a checked domain and problem (see [`pddl::check_problem`]).
+pub fn translate(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+) -> Result<Translation, TranslateError> {
+    let model = model::Model::build(domain, problem)?;
+    let grounding = ground::ground(&model)?;
+    let mut stats = TranslateStats {
+        reachable_atoms: grounding.atoms.len(),
+        fluent_atoms: grounding.fluent.iter().filter(|&&f| f).count(),
+        ground_actions: grounding.actions.len(),
+        ..TranslateStats::default()
+    };
+    if let Some(reason) = grounding.unsolvable.clone() {
+        return Ok(Translation::Unsolvable { reason, stats });
+    }
+    let groups = invariants::mutex_groups(&model, &grounding);
+    stats.mutex_groups = groups.len();
+    let result = sas::build(&model, &grounding, &groups)?;
+    stats.variables_before_relevance = result.variables_before_relevance;
+    result
+        .task
+        .validate()
+        .map_err(|e| TranslateError::Internal(e.to_string()))?;
+    Ok(Translation::Task(TranslatedTask {
+        task: result.task,
+        stats,
+    }))
+}

@@ -1,0 +1,383 @@
+//! From the grounded propositional task and its mutex groups to the finite-domain task.
+//!
+//! Variables are chosen greedily, as Fast Downward's translator does: the mutex group
+//! covering the most atoms not yet covered becomes a variable, until no group covers two;
+//! every other fluent atom becomes a binary variable. Two kinds of atoms stay binary,
+//! because a multi-valued variable cannot express them without conditional effects or
+//! multiplying operators out: atoms that occur negated in a precondition or the goal, and
+//! atoms that some action deletes without requiring them and without setting another
+//! value of the group. Finally, variables that cannot influence the goal (not ancestors
+//! of a goal variable in the causal graph) are removed, with the operators left without
+//! effects.
+
+use rustc_hash::FxHashSet;
+use task::{Fact, Operator, Task, VarId, Variable};
+
+use crate::ground::{atom_text, AtomId, Grounding};
+use crate::model::Model;
+use crate::TranslateError;
+
+const NONE_OF_THOSE: &str = "<none of those>";
+
+/// Where a fluent atom lives in the finite-domain task.
+#[derive(Debug, Clone, Copy)]
+struct Slot {
+    var: u32,
+    value: u32,
+}
+
+pub(crate) struct SasResult {
+    pub task: Task,
+    /// Variables before irrelevant ones were removed.
+    pub variables_before_relevance: usize,
+}
+
+pub(crate) fn build(
+    model: &Model,
+    g: &Grounding,
+    groups: &[Vec<AtomId>],
+) -> Result<SasResult, TranslateError> {
+    let n = g.atoms.len();
+    // Atoms that must stay binary.
+    let mut must_be_binary = vec![false; n];
+    for a in &g.actions {
+        for &x in &a.neg {
+            must_be_binary[x as usize] = true;
+        }
+    }
+    for &x in &g.goal_neg {
+        must_be_binary[x as usize] = true;
+    }
+    // Actions that delete an atom without requiring it.
+    let mut unrequired_deleters: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for (i, a) in g.actions.iter().enumerate() {
+        for &d in &a.del {
+            if a.pre.binary_search(&d).is_err() {
+                unrequired_deleters[d as usize].push(i as u32);
+            }
+        }
+    }
+
+    // Greedy choice of groups.
+    let mut covered = vec![false; n];
+    let mut candidates: Vec<Vec<AtomId>> = groups
+        .iter()
+        .map(|grp| {
+            let mut c: Vec<AtomId> = grp
+                .iter()
+                .copied()
+                .filter(|&a| !must_be_binary[a as usize])
+                .collect();
+            remove_unsafely_deleted(&mut c, g, &unrequired_deleters);
+            c
+        })
+        .collect();
+    let mut containing: Vec<Vec<u32>> = vec![Vec::new(); n];
+    for (i, c) in candidates.iter().enumerate() {
+        for &a in c {
+            containing[a as usize].push(i as u32);
+        }
+    }
+    let mut chosen: Vec<Vec<AtomId>> = Vec::new();
+    while let Some((best, size)) = candidates
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (i, c.len()))
+        .max_by_key(|&(i, len)| (len, std::cmp::Reverse(i)))
+    {
+        if size < 2 {
+            break;
+        }
+        let group = std::mem::take(&mut candidates[best]);
+        let mut touched: Vec<u32> = Vec::new();
+        for &a in &group {
+            covered[a as usize] = true;
+            touched.extend(&containing[a as usize]);
+        }
+        touched.sort_unstable();
+        touched.dedup();
+        for i in touched {
+            let c = &mut candidates[i as usize];
+            c.retain(|&a| !covered[a as usize]);
+            remove_unsafely_deleted(c, g, &unrequired_deleters);
+        }
+        chosen.push(group);
+    }
+
+    let mut slots: Vec<Option<Slot>> = vec![None; n];
+    let mut variables: Vec<Variable> = Vec::new();
+    let mut has_none: Vec<Option<u32>> = Vec::new();
+    for group in &chosen {
+        let var = variables.len() as u32;
+        let mut value_names: Vec<String> = group
+            .iter()
+            .map(|&a| format!("Atom {}", text(model, g, a)))
+            .collect();
+        for (value, &a) in group.iter().enumerate() {
+            slots[a as usize] = Some(Slot {
+                var,
+                value: value as u32,
+            });
+        }
+        let none = if needs_none_value(g, group) {
+            value_names.push(NONE_OF_THOSE.to_string());
+            Some(group.len() as u32)
+        } else {
+            None
+        };
+        has_none.push(none);
+        variables.push(Variable {
+            name: format!("var{var}"),
+            value_names,
+        });
+    }
+    for a in 0..n as AtomId {
+        if g.fluent[a as usize] && slots[a as usize].is_none() {
+            let var = variables.len() as u32;
+            let t = text(model, g, a);
+            variables.push(Variable {
+                name: format!("var{var}"),
+                value_names: vec![format!("Atom {t}"), format!("NegatedAtom {t}")],
+            });
+            has_none.push(Some(1));
+            slots[a as usize] = Some(Slot { var, value: 0 });
+        }
+    }
+    let slot = |a: AtomId| {
+        slots[a as usize]
+            .ok_or_else(|| TranslateError::Internal(format!("atom {a} has no variable")))
+    };
+    let false_value = |s: Slot| has_none[s.var as usize];
+
+    let mut initial_state: Vec<u32> = has_none.iter().map(|h| h.unwrap_or(0)).collect();
+    for &a in &g.init {
+        let s = slot(a)?;
+        initial_state[s.var as usize] = s.value;
+    }
+
+    let mut operators = Vec::new();
+    'actions: for a in &g.actions {
+        let mut pre: Vec<Fact> = Vec::new();
+        for &x in &a.pre {
+            let s = slot(x)?;
+            pre.push(Fact::new(VarId(s.var), s.value));
+        }
+        for &x in &a.neg {
+            let s = slot(x)?;
+            let value = false_value(s)
+                .ok_or_else(|| TranslateError::Internal("negated atom in a group".into()))?;
+            pre.push(Fact::new(VarId(s.var), value));
+        }
+        pre.sort_unstable();
+        pre.dedup();
+        if pre.windows(2).any(|w| w[0].var == w[1].var) {
+            continue; // two values of one variable required: never applicable
+        }
+        let mut eff: Vec<Fact> = Vec::new();
+        for &x in &a.add {
+            let s = slot(x)?;
+            eff.push(Fact::new(VarId(s.var), s.value));
+        }
+        eff.sort_unstable();
+        eff.dedup();
+        if eff.windows(2).any(|w| w[0].var == w[1].var) {
+            return Err(TranslateError::Internal(format!(
+                "operator {} sets a variable twice",
+                action_name(model, a)
+            )));
+        }
+        for &x in &a.del {
+            let s = slot(x)?;
+            if eff.iter().any(|f| f.var.0 == s.var) {
+                continue; // the add of another value of the variable overrides
+            }
+            let value = false_value(s).ok_or_else(|| {
+                TranslateError::Internal(format!(
+                    "operator {} deletes from an exactly-one group",
+                    action_name(model, a)
+                ))
+            })?;
+            eff.push(Fact::new(VarId(s.var), value));
+        }
+        eff.sort_unstable();
+        // An effect that sets the value the precondition requires changes nothing.
+        eff.retain(|f| !pre.contains(f));
+        if eff.is_empty() {
+            continue 'actions;
+        }
+        operators.push(Operator {
+            name: action_name(model, a),
+            preconditions: pre,
+            effects: eff,
+            cost: a.cost,
+        });
+    }
+
+    let mut goal: Vec<Fact> = Vec::new();
+    for &x in &g.goal_pos {
+        let s = slot(x)?;
+        goal.push(Fact::new(VarId(s.var), s.value));
+    }
+    for &x in &g.goal_neg {
+        let s = slot(x)?;
+        let value = false_value(s)
+            .ok_or_else(|| TranslateError::Internal("negated goal atom in a group".into()))?;
+        goal.push(Fact::new(VarId(s.var), value));
+    }
+    goal.sort_unstable();
+
+    let mutexes: Vec<Vec<Fact>> = groups
+        .iter()
+        .map(|grp| {
+            grp.iter()
+                .filter_map(|&a| slots[a as usize].map(|s| Fact::new(VarId(s.var), s.value)))
+                .collect::<Vec<Fact>>()
+        })
+        .filter(|grp| grp.len() >= 2)
+        .collect();
+
+    let task = Task {
+        variables,
+        mutexes,
+        initial_state,
+        goal,
+        operators,
+        use_costs: model.use_costs,
+    };
+    let variables_before_relevance = task.variables.len();
+    Ok(SasResult {
+        task: keep_relevant(task),
+        variables_before_relevance,
+    })
+}
+
+/// Drops atoms of `group` that some action deletes without requiring them and without
+/// adding another atom of the group; repeats until stable (dropping an atom can make
+/// another unsafe).
+fn remove_unsafely_deleted(group: &mut Vec<AtomId>, g: &Grounding, unrequired: &[Vec<u32>]) {
+    if group.iter().all(|&a| unrequired[a as usize].is_empty()) {
+        return;
+    }
+    loop {
+        let members: FxHashSet<AtomId> = group.iter().copied().collect();
+        let before = group.len();
+        group.retain(|&a| {
+            unrequired[a as usize].iter().all(|&act| {
+                g.actions[act as usize]
+                    .add
+                    .iter()
+                    .any(|x| members.contains(x))
+            })
+        });
+        if group.len() == before {
+            return;
+        }
+    }
+}
+
+/// A group needs a "none of those" value unless exactly one of its atoms is true
+/// initially and every action that deletes one adds another.
+fn needs_none_value(g: &Grounding, group: &[AtomId]) -> bool {
+    let members: FxHashSet<AtomId> = group.iter().copied().collect();
+    let initially = g.init.iter().filter(|a| members.contains(a)).count();
+    if initially != 1 {
+        return true;
+    }
+    g.actions.iter().any(|a| {
+        a.del.iter().any(|d| members.contains(d)) && !a.add.iter().any(|x| members.contains(x))
+    })
+}
+
+fn text(model: &Model, g: &Grounding, a: AtomId) -> String {
+    atom_text(model, g.atoms.pred(a), g.atoms.args(a).iter().copied())
+}
+
+fn action_name(model: &Model, a: &crate::ground::GroundAction) -> String {
+    let mut name = model.schemas[a.schema as usize].name.clone();
+    for o in &a.args {
+        name.push(' ');
+        name.push_str(&model.objects[o.0 as usize]);
+    }
+    name
+}
+
+/// Keeps the variables that are goal variables or ancestors of one in the causal graph
+/// (arcs from precondition to effect variables and between effect variables of an
+/// operator), and renumbers them.
+fn keep_relevant(task: Task) -> Task {
+    let nvars = task.variables.len();
+    let mut parents: Vec<Vec<u32>> = vec![Vec::new(); nvars];
+    for op in &task.operators {
+        for e in &op.effects {
+            for p in op.preconditions.iter().chain(&op.effects) {
+                if p.var != e.var {
+                    parents[e.var.index()].push(p.var.0);
+                }
+            }
+        }
+    }
+    let mut keep = vec![false; nvars];
+    let mut stack: Vec<u32> = task.goal.iter().map(|f| f.var.0).collect();
+    while let Some(v) = stack.pop() {
+        if !keep[v as usize] {
+            keep[v as usize] = true;
+            stack.extend(parents[v as usize].iter().copied());
+        }
+    }
+    let mut new_index = vec![u32::MAX; nvars];
+    let mut count = 0;
+    for v in 0..nvars {
+        if keep[v] {
+            new_index[v] = count;
+            count += 1;
+        }
+    }
+    let map = |facts: &[Fact]| -> Vec<Fact> {
+        facts
+            .iter()
+            .filter(|f| keep[f.var.index()])
+            .map(|f| Fact::new(VarId(new_index[f.var.index()]), f.value))
+            .collect()
+    };
+    let variables = task
+        .variables
+        .into_iter()
+        .enumerate()
+        .filter(|(v, _)| keep[*v])
+        .map(|(v, mut var)| {
+            var.name = format!("var{}", new_index[v]);
+            var
+        })
+        .collect();
+    let operators = task
+        .operators
+        .into_iter()
+        .filter_map(|op| {
+            let effects = map(&op.effects);
+            (!effects.is_empty()).then(|| Operator {
+                preconditions: map(&op.preconditions),
+                effects,
+                ..op
+            })
+        })
+        .collect();
+    Task {
+        variables,
+        mutexes: task
+            .mutexes
+            .iter()
+            .map(|m| map(m))
+            .filter(|m| m.len() >= 2)
+            .collect(),
+        initial_state: task
+            .initial_state
+            .iter()
+            .enumerate()
+            .filter(|(v, _)| keep[*v])
+            .map(|(_, &x)| x)
+            .collect(),
+        goal: map(&task.goal),
+        operators,
+        use_costs: task.use_costs,
+    }
+}

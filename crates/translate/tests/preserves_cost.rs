@@ -156,6 +156,14 @@ fn random_task(seed: u64) -> (String, String) {
     (d, p)
 }
 
+/// Preconditions, effects (add or delete), cost, and the binding of one ground action.
+type GroundAction = (
+    Vec<(bool, pddl::Atom)>,
+    Vec<(bool, String)>,
+    u64,
+    HashMap<String, String>,
+);
+
 /// Uniform-cost search on the PDDL semantics, over every binding of every action.
 fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Option<u64> {
     let mut objects: Vec<(String, Vec<String>)> = Vec::new();
@@ -178,12 +186,7 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Option<u64> {
             .collect();
         format!("{} {}", a.predicate.text, args.join(" "))
     };
-    let mut ground: Vec<(
-        Vec<(bool, pddl::Atom)>,
-        Vec<(bool, String)>,
-        u64,
-        HashMap<String, String>,
-    )> = Vec::new();
+    let mut ground: Vec<GroundAction> = Vec::new();
     for a in &domain.actions {
         let n = a.params.len();
         let mut idx = vec![0usize; n];

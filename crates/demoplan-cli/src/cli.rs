@@ -40,6 +40,19 @@ pub enum Command {
         #[arg(long)]
         stdout: bool,
     },
+    /// Translate a PDDL task into a finite-domain task, as Fast Downward's translator does.
+    ///
+    /// Prints the sizes ("Translator variables: N", ...) and writes the task in Fast
+    /// Downward's output.sas format. A goal unreachable even in the relaxation is reported
+    /// at once as unsolvable (exit 11), with a trivially unsolvable task written.
+    Translate {
+        /// `[DOMAIN] PROBLEM`; the domain is found beside the problem when omitted.
+        #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+        files: Vec<PathBuf>,
+        /// Where to write the task.
+        #[arg(long, value_name = "FILE", default_value = "output.sas")]
+        sas_file: PathBuf,
+    },
     /// Validate plans against a domain and problem, in the manner of VAL's `validate`.
     ///
     /// For each plan: whether every step is applicable, whether the goal holds at the end,

@@ -11,6 +11,8 @@ impl ExitCode {
     pub const SUCCESS: ExitCode = ExitCode(0);
     /// A check that found a difference: `fmt --check` on a file that is not canonical.
     pub const CHECK_FAILED: ExitCode = ExitCode(1);
+    /// Fast Downward's SEARCH_UNSOLVABLE: the task has no plan.
+    pub const UNSOLVABLE: ExitCode = ExitCode(11);
     /// Fast Downward's TRANSLATE_INPUT_ERROR: the PDDL is malformed or inconsistent.
     pub const INPUT_ERROR: ExitCode = ExitCode(31);
     /// Fast Downward's SEARCH_UNSUPPORTED: valid PDDL outside the supported fragment.

@@ -6,6 +6,7 @@ mod commands;
 mod diagnostic;
 mod exit;
 mod input;
+mod output;
 
 use std::io::Write;
 
@@ -41,6 +42,7 @@ fn main() {
 fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
     match cli.command {
         cli::Command::Check { files } => commands::check::run(&files),
+        cli::Command::Translate { files, sas_file } => commands::translate::run(&files, &sas_file),
         cli::Command::Fmt {
             files,
             check,

@@ -129,7 +129,11 @@ impl Operators {
         for op in &task.operators {
             ops.cost.push(task.cost(op));
             writes.clear();
-            writes.extend(op.effects.iter().map(|f| packer.write_mask(f.var.index(), f.value)));
+            writes.extend(
+                op.effects
+                    .iter()
+                    .map(|f| packer.write_mask(f.var.index(), f.value)),
+            );
             writes.sort_by_key(|w| w.0);
             let begin = ops.packed.len();
             for &(word, clear, set) in &writes {
@@ -142,7 +146,8 @@ impl Operators {
                 }
             }
             ops.packed_start.push(ops.packed.len() as u32);
-            ops.unpacked.extend(op.effects.iter().map(|f| (f.var.0, f.value)));
+            ops.unpacked
+                .extend(op.effects.iter().map(|f| (f.var.0, f.value)));
             ops.unpacked_start.push(ops.unpacked.len() as u32);
         }
         ops
@@ -240,7 +245,13 @@ pub fn astar<H: Heuristic + ?Sized>(
     let mut registry = StateRegistry::new(words);
     let mut generator = SuccessorGenerator::new(task);
     let ops = Operators::new(task, &packer);
-    let mut info = StateInfo { g: vec![], h: vec![], parent: vec![], creating_op: vec![], status: vec![] };
+    let mut info = StateInfo {
+        g: vec![],
+        h: vec![],
+        parent: vec![],
+        creating_op: vec![],
+        status: vec![],
+    };
     let mut open = OpenList::new();
     let mut stats = Statistics::default();
 
@@ -254,7 +265,10 @@ pub fn astar<H: Heuristic + ?Sized>(
     let finish = |outcome: Outcome, mut stats: Statistics, registry: &StateRegistry| {
         stats.search_time = start.elapsed();
         stats.registered_states = registry.len() as u64;
-        Ok(SearchResult { outcome, statistics: stats })
+        Ok(SearchResult {
+            outcome,
+            statistics: stats,
+        })
     };
 
     packer.pack(&task.initial_state, &mut child_packed);
@@ -313,7 +327,10 @@ pub fn astar<H: Heuristic + ?Sized>(
         parent_packed.copy_from_slice(registry.get(id));
         packer.unpack(&parent_packed, &mut state);
         if task.is_goal(&state) {
-            let plan = Plan { operators: info.extract_plan(id), cost: info.g[s] };
+            let plan = Plan {
+                operators: info.extract_plan(id),
+                cost: info.g[s],
+            };
             return finish(Outcome::Solved(plan), stats, &registry);
         }
         let g = info.g[s];
@@ -375,4 +392,239 @@ fn check_limits(limits: &SearchLimits, own_bytes: impl FnOnce() -> usize) -> Opt
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::heuristic::Blind;
+    use crate::hmax::HMax;
+    use task::{Fact, Operator, VarId, Variable};
+
+    /// A robot on a line of `n` positions, starting at 0, with the goal at `n - 1`.
+    fn line(n: u32) -> Task {
+        let step = |from: u32, to: u32| Operator {
+            name: format!("move p{from} p{to}"),
+            preconditions: vec![Fact::new(VarId(0), from)],
+            effects: vec![Fact::new(VarId(0), to)],
+            cost: 1,
+        };
+        Task {
+            variables: vec![Variable {
+                name: "at".into(),
+                value_names: (0..n).map(|i| format!("p{i}")).collect(),
+            }],
+            mutexes: vec![],
+            initial_state: vec![0],
+            goal: vec![Fact::new(VarId(0), n - 1)],
+            operators: (1..n)
+                .flat_map(|i| [step(i - 1, i), step(i, i - 1)])
+                .collect(),
+            use_costs: false,
+        }
+    }
+
+    #[test]
+    fn statistics_and_layers_in_fast_downwards_terms() {
+        let task = line(4);
+        let mut layers = Vec::new();
+        let result = astar(
+            &task,
+            &mut Blind::new(&task),
+            &SearchLimits::default(),
+            Some(&mut |p| layers.push(p)),
+        )
+        .unwrap();
+        let Outcome::Solved(plan) = result.outcome else {
+            panic!("solvable")
+        };
+        assert_eq!(plan.operators, vec![OpId(0), OpId(2), OpId(4)]);
+        assert_eq!(plan.cost, 3);
+        let progress = |f, expanded, evaluated, generated| Progress {
+            f,
+            expanded,
+            evaluated,
+            generated,
+        };
+        assert_eq!(
+            layers,
+            vec![
+                progress(1, 0, 1, 0),
+                progress(2, 1, 2, 1),
+                progress(3, 2, 3, 3)
+            ]
+        );
+        let s = result.statistics;
+        assert_eq!(
+            (
+                s.expanded,
+                s.evaluated,
+                s.generated,
+                s.reopened,
+                s.dead_ends
+            ),
+            (4, 4, 5, 0, 0)
+        );
+        assert_eq!(
+            (
+                s.expanded_until_last_jump,
+                s.evaluated_until_last_jump,
+                s.generated_until_last_jump
+            ),
+            (2, 3, 3)
+        );
+        assert_eq!(s.initial_h, Some(1));
+        assert_eq!(s.registered_states, 4);
+    }
+
+    #[test]
+    fn goal_in_the_initial_state() {
+        let mut task = line(3);
+        task.initial_state = vec![2];
+        let result = astar(
+            &task,
+            &mut Blind::new(&task),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert_eq!(
+            result.outcome,
+            Outcome::Solved(Plan {
+                operators: vec![],
+                cost: 0
+            })
+        );
+        assert_eq!(result.statistics.expanded, 1);
+        assert_eq!(result.statistics.initial_h, Some(0));
+    }
+
+    #[test]
+    fn unsolvable_and_dead_ends() {
+        // Only forward moves up to position 2, goal 3: the space is exhausted.
+        let mut task = line(4);
+        task.operators.retain(|op| op.name != "move p2 p3");
+        let result = astar(
+            &task,
+            &mut Blind::new(&task),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert_eq!(result.outcome, Outcome::Unsolvable);
+        assert_eq!(result.statistics.expanded, 3);
+        // h^max sees it at once: the initial state is a dead end.
+        let result = astar(
+            &task,
+            &mut HMax::new(&task).unwrap(),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert_eq!(result.outcome, Outcome::Unsolvable);
+        assert_eq!(result.statistics.initial_h, None);
+        assert_eq!(
+            (result.statistics.expanded, result.statistics.dead_ends),
+            (0, 1)
+        );
+        // Dead ends among successors are pruned: a trap position with no way out.
+        let mut task = line(3);
+        task.variables[0].value_names.push("trap".into());
+        task.operators.push(Operator {
+            name: "fall".into(),
+            preconditions: vec![Fact::new(VarId(0), 0)],
+            effects: vec![Fact::new(VarId(0), 3)],
+            cost: 0,
+        });
+        let result = astar(
+            &task,
+            &mut HMax::new(&task).unwrap(),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 2));
+        assert_eq!(result.statistics.dead_ends, 1);
+    }
+
+    #[test]
+    fn limits_end_the_search_with_statistics() {
+        let task = line(500);
+        let past = SearchLimits {
+            deadline: Some(Instant::now()),
+            ..SearchLimits::default()
+        };
+        let result = astar(&task, &mut Blind::new(&task), &past, None).unwrap();
+        assert_eq!(result.outcome, Outcome::TimeLimit);
+        assert_eq!(result.statistics.evaluated, 1);
+
+        let tiny = SearchLimits {
+            memory_limit_bytes: Some(0),
+            ..SearchLimits::default()
+        };
+        let result = astar(&task, &mut Blind::new(&task), &tiny, None).unwrap();
+        assert_eq!(result.outcome, Outcome::MemoryLimit);
+
+        fn small() -> u64 {
+            1000
+        }
+        fn large() -> u64 {
+            1 << 40
+        }
+        let fits = SearchLimits {
+            memory_limit_bytes: Some(1 << 30),
+            memory_usage: Some(small),
+            ..SearchLimits::default()
+        };
+        let result = astar(&task, &mut Blind::new(&task), &fits, None).unwrap();
+        assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 499));
+        let over = SearchLimits {
+            memory_usage: Some(large),
+            ..fits
+        };
+        assert_eq!(
+            astar(&task, &mut Blind::new(&task), &over, None)
+                .unwrap()
+                .outcome,
+            Outcome::MemoryLimit
+        );
+    }
+
+    #[test]
+    fn invalid_task_is_an_error() {
+        let mut task = line(3);
+        task.initial_state = vec![7];
+        assert!(matches!(
+            astar(
+                &task,
+                &mut Blind::new(&task),
+                &SearchLimits::default(),
+                None
+            ),
+            Err(SearchError::InvalidTask(_))
+        ));
+    }
+
+    #[test]
+    fn packed_effects_merge_per_word() {
+        // Five binary variables share one word; an operator setting all of them must
+        // produce one packed write.
+        let mut task = line(2);
+        for i in 0..4 {
+            task.variables.push(Variable::binary(&format!("b{i}")));
+            task.initial_state.push(1);
+        }
+        task.operators[0].effects = (0..5)
+            .map(|v| Fact::new(VarId(v), if v == 0 { 1 } else { 0 }))
+            .collect();
+        let packer = StatePacker::for_task(&task);
+        let ops = Operators::new(&task, &packer);
+        assert_eq!(ops.packed_start[1], 1);
+        let mut packed = vec![0; packer.words_per_state()];
+        packer.pack(&task.initial_state, &mut packed);
+        ops.apply_packed(0, &mut packed);
+        let mut state = vec![0; 5];
+        packer.unpack(&packed, &mut state);
+        assert_eq!(state, vec![1, 0, 0, 0, 0]);
+    }
 }

@@ -27,7 +27,10 @@ pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
 
 /// The search string for a Fast Downward alias (`seq-opt-lmcut`), if known.
 pub fn alias(name: &str) -> Option<&'static str> {
-    ALIASES.iter().find(|(alias, _)| *alias == name).map(|&(_, search)| search)
+    ALIASES
+        .iter()
+        .find(|(alias, _)| *alias == name)
+        .map(|&(_, search)| search)
 }
 
 /// A parsed search string.
@@ -87,7 +90,10 @@ impl fmt::Display for SearchConfig {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ConfigError {
     /// The string is not a well-formed term.
-    #[error("syntax error at byte {position} of the search string: {message}\n{}", known())]
+    #[error(
+        "syntax error at byte {position} of the search string: {message}\n{}",
+        known()
+    )]
     Syntax {
         /// Byte offset of the problem.
         position: usize,
@@ -159,15 +165,22 @@ fn interpret_search(term: &Term) -> Result<SearchConfig, ConfigError> {
     match term.name.as_str() {
         "astar" => {
             let mut args = Args::new(term, &["eval"])?;
-            let eval = args.take("eval")?.ok_or_else(|| ConfigError::MissingArgument {
-                function: term.name.clone(),
-                argument: "eval".into(),
-            })?;
+            let eval = args
+                .take("eval")?
+                .ok_or_else(|| ConfigError::MissingArgument {
+                    function: term.name.clone(),
+                    argument: "eval".into(),
+                })?;
             args.finish()?;
             let heuristic = interpret_heuristic(eval)?;
-            Ok(SearchConfig { engine: Engine::AStar, heuristic })
+            Ok(SearchConfig {
+                engine: Engine::AStar,
+                heuristic,
+            })
         }
-        _ => Err(ConfigError::UnknownEngine { name: term.name.clone() }),
+        _ => Err(ConfigError::UnknownEngine {
+            name: term.name.clone(),
+        }),
     }
 }
 
@@ -185,7 +198,9 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
         "blind" => HeuristicConfig::Blind,
         "hmax" => HeuristicConfig::HMax,
         name if PLANNED_HEURISTICS.contains(&name) => {
-            return Err(ConfigError::NotYetSupported { name: name.to_string() })
+            return Err(ConfigError::NotYetSupported {
+                name: name.to_string(),
+            })
         }
         name if SEARCH_ENGINES.contains(&name) => {
             return Err(ConfigError::InvalidArgument {
@@ -193,7 +208,11 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
                 message: format!("`{name}` is a search engine, not a heuristic"),
             })
         }
-        name => return Err(ConfigError::UnknownHeuristic { name: name.to_string() }),
+        name => {
+            return Err(ConfigError::UnknownHeuristic {
+                name: name.to_string(),
+            })
+        }
     };
     Args::new(term, &[])?.finish()?;
     Ok(heuristic)
@@ -251,14 +270,22 @@ impl<'t> Args<'t> {
                 None => return Err(unexpected(format!("number {} (positional)", i + 1))),
             }
         }
-        Ok(Args { function: &term.name, params, values })
+        Ok(Args {
+            function: &term.name,
+            params,
+            values,
+        })
     }
 
     fn take(&mut self, param: &str) -> Result<Option<&'t Value>, ConfigError> {
-        let i = self.params.iter().position(|p| *p == param).ok_or_else(|| ConfigError::InvalidArgument {
-            function: self.function.to_string(),
-            message: format!("internal: no parameter `{param}`"),
-        })?;
+        let i = self
+            .params
+            .iter()
+            .position(|p| *p == param)
+            .ok_or_else(|| ConfigError::InvalidArgument {
+                function: self.function.to_string(),
+                message: format!("internal: no parameter `{param}`"),
+            })?;
         Ok(self.values[i].take())
     }
 
@@ -302,7 +329,10 @@ impl<'s> Parser<'s> {
     }
 
     fn error(&self, message: &str) -> ConfigError {
-        ConfigError::Syntax { position: self.pos, message: message.to_string() }
+        ConfigError::Syntax {
+            position: self.pos,
+            message: message.to_string(),
+        }
     }
 
     fn skip_space(&mut self) {
@@ -348,16 +378,14 @@ impl<'s> Parser<'s> {
         }
         let name = self.word()?;
         let mut args = Vec::new();
-        if self.eat('(') {
-            if !self.eat(')') {
-                loop {
-                    args.push(self.arg(depth + 1)?);
-                    if self.eat(')') {
-                        break;
-                    }
-                    if !self.eat(',') {
-                        return Err(self.expected("`,` or `)`"));
-                    }
+        if self.eat('(') && !self.eat(')') {
+            loop {
+                args.push(self.arg(depth + 1)?);
+                if self.eat(')') {
+                    break;
+                }
+                if !self.eat(',') {
+                    return Err(self.expected("`,` or `)`"));
                 }
             }
         }
@@ -375,15 +403,24 @@ impl<'s> Parser<'s> {
     fn arg(&mut self, depth: usize) -> Result<Arg, ConfigError> {
         self.skip_space();
         if self.peek() == Some('[') {
-            return Ok(Arg { key: None, value: self.value(depth)? });
+            return Ok(Arg {
+                key: None,
+                value: self.value(depth)?,
+            });
         }
         let start = self.pos;
         let word = self.word()?;
         if self.eat('=') {
-            return Ok(Arg { key: Some(word), value: self.value(depth)? });
+            return Ok(Arg {
+                key: Some(word),
+                value: self.value(depth)?,
+            });
         }
         self.pos = start;
-        Ok(Arg { key: None, value: self.value(depth)? })
+        Ok(Arg {
+            key: None,
+            value: self.value(depth)?,
+        })
     }
 
     fn value(&mut self, depth: usize) -> Result<Value, ConfigError> {
@@ -426,8 +463,14 @@ mod tests {
 
     #[test]
     fn accepts_the_supported_strings() {
-        let blind = SearchConfig { engine: Engine::AStar, heuristic: HeuristicConfig::Blind };
-        let hmax = SearchConfig { engine: Engine::AStar, heuristic: HeuristicConfig::HMax };
+        let blind = SearchConfig {
+            engine: Engine::AStar,
+            heuristic: HeuristicConfig::Blind,
+        };
+        let hmax = SearchConfig {
+            engine: Engine::AStar,
+            heuristic: HeuristicConfig::HMax,
+        };
         assert_eq!(ok("astar(blind())"), blind);
         assert_eq!(ok("  astar ( blind ( ) )  "), blind);
         assert_eq!(ok("astar(\n\tblind()\n)"), blind);
@@ -454,7 +497,10 @@ mod tests {
 
     #[test]
     fn planned_heuristics_are_not_yet_supported() {
-        assert_eq!(err("astar(lmcut())"), "heuristic `lmcut` is not yet supported by demoplan");
+        assert_eq!(
+            err("astar(lmcut())"),
+            "heuristic `lmcut` is not yet supported by demoplan"
+        );
         assert_eq!(
             err("astar(ipdb(max_time=infinity, pdb_max_size=2000000))"),
             "heuristic `ipdb` is not yet supported by demoplan"
@@ -468,18 +514,48 @@ mod tests {
     #[test]
     fn error_messages() {
         assert_eq!(err("astar(ff())"), "unknown heuristic `ff`");
-        assert_eq!(err("lazy_greedy([ff()])"), "unknown search engine `lazy_greedy`");
+        assert_eq!(
+            err("lazy_greedy([ff()])"),
+            "unknown search engine `lazy_greedy`"
+        );
         assert_eq!(err("blind()"), "unknown search engine `blind`");
         assert_eq!(err("astar()"), "`astar` needs the argument `eval`");
-        assert_eq!(err("astar(blind(), hmax())"), "`astar` does not take the argument number 2 (positional)");
-        assert_eq!(err("astar(blind(), eval=hmax())"), "`astar` does not take the argument `eval` twice");
-        assert_eq!(err("astar(blind(), bound=10)"), "`astar` does not take the argument `bound=`");
-        assert_eq!(err("astar(blind(cache_estimates=false))"), "`blind` does not take the argument `cache_estimates=`");
-        assert_eq!(err("astar(hmax(3))"), "`hmax` does not take the argument number 1 (positional)");
-        assert_eq!(err("astar([blind()])"), "`astar`: a list is not a heuristic");
-        assert_eq!(err("astar(astar(blind()))"), "`astar`: `astar` is a search engine, not a heuristic");
-        assert_eq!(err(""), "syntax error at byte 0 of the search string: the search string is empty");
-        assert_eq!(err("   "), "syntax error at byte 3 of the search string: the search string is empty");
+        assert_eq!(
+            err("astar(blind(), hmax())"),
+            "`astar` does not take the argument number 2 (positional)"
+        );
+        assert_eq!(
+            err("astar(blind(), eval=hmax())"),
+            "`astar` does not take the argument `eval` twice"
+        );
+        assert_eq!(
+            err("astar(blind(), bound=10)"),
+            "`astar` does not take the argument `bound=`"
+        );
+        assert_eq!(
+            err("astar(blind(cache_estimates=false))"),
+            "`blind` does not take the argument `cache_estimates=`"
+        );
+        assert_eq!(
+            err("astar(hmax(3))"),
+            "`hmax` does not take the argument number 1 (positional)"
+        );
+        assert_eq!(
+            err("astar([blind()])"),
+            "`astar`: a list is not a heuristic"
+        );
+        assert_eq!(
+            err("astar(astar(blind()))"),
+            "`astar`: `astar` is a search engine, not a heuristic"
+        );
+        assert_eq!(
+            err(""),
+            "syntax error at byte 0 of the search string: the search string is empty"
+        );
+        assert_eq!(
+            err("   "),
+            "syntax error at byte 3 of the search string: the search string is empty"
+        );
         assert_eq!(
             err("astar(blind()"),
             "syntax error at byte 13 of the search string: expected `,` or `)`, found the end of the string"
@@ -488,13 +564,22 @@ mod tests {
             err("astar(blind()))"),
             "syntax error at byte 14 of the search string: unexpected text after the search engine's closing parenthesis"
         );
-        assert_eq!(err("astar(,)"), "syntax error at byte 6 of the search string: expected a name, found `,`");
+        assert_eq!(
+            err("astar(,)"),
+            "syntax error at byte 6 of the search string: expected a name, found `,`"
+        );
         assert_eq!(
             err("astar(blind() hmax())"),
             "syntax error at byte 14 of the search string: expected `,` or `)`, found `h`"
         );
-        assert_eq!(err("astar(x=)"), "syntax error at byte 8 of the search string: expected a name, found `)`");
-        assert_eq!(err("(blind())"), "syntax error at byte 0 of the search string: expected a name, found `(`");
+        assert_eq!(
+            err("astar(x=)"),
+            "syntax error at byte 8 of the search string: expected a name, found `)`"
+        );
+        assert_eq!(
+            err("(blind())"),
+            "syntax error at byte 0 of the search string: expected a name, found `(`"
+        );
     }
 
     #[test]
@@ -518,23 +603,42 @@ mod tests {
 
     #[test]
     fn generic_terms() {
-        let term = Parser::new("f(a, k = [1, 2.5, g(x)], infinity)").parse().unwrap();
-        let word = |s: &str| Value::Term(Term { name: s.into(), args: vec![] });
+        let term = Parser::new("f(a, k = [1, 2.5, g(x)], infinity)")
+            .parse()
+            .unwrap();
+        let word = |s: &str| {
+            Value::Term(Term {
+                name: s.into(),
+                args: vec![],
+            })
+        };
         assert_eq!(
             term,
             Term {
                 name: "f".into(),
                 args: vec![
-                    Arg { key: None, value: word("a") },
+                    Arg {
+                        key: None,
+                        value: word("a")
+                    },
                     Arg {
                         key: Some("k".into()),
                         value: Value::List(vec![
                             word("1"),
                             word("2.5"),
-                            Value::Term(Term { name: "g".into(), args: vec![Arg { key: None, value: word("x") }] }),
+                            Value::Term(Term {
+                                name: "g".into(),
+                                args: vec![Arg {
+                                    key: None,
+                                    value: word("x")
+                                }]
+                            }),
                         ]),
                     },
-                    Arg { key: None, value: word("infinity") },
+                    Arg {
+                        key: None,
+                        value: word("infinity")
+                    },
                 ],
             }
         );

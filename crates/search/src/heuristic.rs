@@ -42,8 +42,16 @@ pub struct Blind {
 impl Blind {
     /// The blind heuristic for `task` (costs as [`Task::cost`] gives them).
     pub fn new(task: &Task) -> Blind {
-        let min_cost = task.operators.iter().map(|op| task.cost(op)).min().unwrap_or(0);
-        Blind { goal: task.goal.clone(), min_cost }
+        let min_cost = task
+            .operators
+            .iter()
+            .map(|op| task.cost(op))
+            .min()
+            .unwrap_or(0);
+        Blind {
+            goal: task.goal.clone(),
+            min_cost,
+        }
     }
 }
 
@@ -54,7 +62,10 @@ impl Heuristic for Blind {
 
     #[inline]
     fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
-        let goal = self.goal.iter().all(|f| state.get(f.var.index()) == Some(&f.value));
+        let goal = self
+            .goal
+            .iter()
+            .all(|f| state.get(f.var.index()) == Some(&f.value));
         Some(if goal { 0 } else { self.min_cost })
     }
 }

@@ -119,7 +119,10 @@ impl HMax {
     #[inline]
     fn apply(&mut self, op: usize, base: u64) {
         let cost = base.saturating_add(self.op_cost[op]);
-        let (start, end) = (self.op_effect_start[op] as usize, self.op_effect_start[op + 1] as usize);
+        let (start, end) = (
+            self.op_effect_start[op] as usize,
+            self.op_effect_start[op + 1] as usize,
+        );
         for i in start..end {
             let fact = self.op_effects[i];
             self.reach(fact, cost);
@@ -159,8 +162,10 @@ impl Heuristic for HMax {
                     return Some(cost);
                 }
             }
-            let (start, end) =
-                (self.pre_of_start[fact as usize] as usize, self.pre_of_start[fact as usize + 1] as usize);
+            let (start, end) = (
+                self.pre_of_start[fact as usize] as usize,
+                self.pre_of_start[fact as usize + 1] as usize,
+            );
             for i in start..end {
                 let op = self.pre_of[i] as usize;
                 self.unsatisfied[op] -= 1;
@@ -181,7 +186,12 @@ mod tests {
 
     fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
         let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
-        Operator { name: name.into(), preconditions: facts(pre), effects: facts(eff), cost }
+        Operator {
+            name: name.into(),
+            preconditions: facts(pre),
+            effects: facts(eff),
+            cost,
+        }
     }
 
     /// Variables a, b, c, d binary (value 0 = true); goal c and d.
@@ -189,7 +199,10 @@ mod tests {
     /// cheap-c (d, 10) -> c; make-d (a, 4) -> d.
     fn task() -> Task {
         Task {
-            variables: ["a", "b", "c", "d"].iter().map(|n| Variable::binary(n)).collect(),
+            variables: ["a", "b", "c", "d"]
+                .iter()
+                .map(|n| Variable::binary(n))
+                .collect(),
             mutexes: vec![],
             initial_state: vec![1, 1, 1, 1],
             goal: vec![Fact::new(VarId(2), 0), Fact::new(VarId(3), 0)],
@@ -234,7 +247,7 @@ mod tests {
         let mut h = HMax::new(&t).unwrap();
         assert_eq!(h.evaluate(&[1, 1, 1, 1]), None);
         assert_eq!(h.evaluate(&[1, 1, 1, 0]), Some(1)); // cheap-c costs 1 without costs.
-        // An empty goal costs nothing.
+                                                        // An empty goal costs nothing.
         t.goal.clear();
         assert_eq!(HMax::new(&t).unwrap().evaluate(&[1, 1, 1, 1]), Some(0));
     }

@@ -67,9 +67,16 @@ pub fn replay(task: &Task, plan: &[OpId]) -> Result<Vec<u32>, ReplayError> {
     task.validate()?;
     let mut state = task.initial_state.clone();
     for (step, &op) in plan.iter().enumerate() {
-        let operator = task.operators.get(op.index()).ok_or(ReplayError::UnknownOperator { step, op })?;
+        let operator = task
+            .operators
+            .get(op.index())
+            .ok_or(ReplayError::UnknownOperator { step, op })?;
         if !task.is_applicable(operator, &state) {
-            return Err(ReplayError::NotApplicable { step, op, name: operator.name.clone() });
+            return Err(ReplayError::NotApplicable {
+                step,
+                op,
+                name: operator.name.clone(),
+            });
         }
         for f in &operator.effects {
             state[f.var.index()] = f.value;
@@ -119,7 +126,11 @@ mod tests {
         assert!(t.is_goal(&end));
         assert_eq!(
             replay(&t, &[OpId(0), OpId(1), OpId(1)]),
-            Err(ReplayError::NotApplicable { step: 2, op: OpId(1), name: "a-to-b".into() })
+            Err(ReplayError::NotApplicable {
+                step: 2,
+                op: OpId(1),
+                name: "a-to-b".into()
+            })
         );
         let err = replay(&t, &[OpId(7)]).unwrap_err();
         assert_eq!(err.to_string(), "step 0: the task has no operator 7");

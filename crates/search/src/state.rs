@@ -59,7 +59,14 @@ impl StatePacker {
         // Widest first; ties by index (the sort is stable).
         order.sort_by_key(|&v| std::cmp::Reverse(bits_for(domain_sizes[v])));
         let mut free: Vec<u32> = Vec::new();
-        let mut slots = vec![Slot { word: 0, shift: 0, mask: 0 }; domain_sizes.len()];
+        let mut slots = vec![
+            Slot {
+                word: 0,
+                shift: 0,
+                mask: 0
+            };
+            domain_sizes.len()
+        ];
         for v in order {
             let bits = bits_for(domain_sizes[v]);
             if bits == 0 {
@@ -74,10 +81,17 @@ impl StatePacker {
             };
             let shift = 64 - free[word];
             free[word] -= bits;
-            slots[v] = Slot { word: word as u32, shift, mask: (1u64 << bits) - 1 };
+            slots[v] = Slot {
+                word: word as u32,
+                shift,
+                mask: (1u64 << bits) - 1,
+            };
         }
         // At least one word, so that variables of one value (no bits) read word 0.
-        StatePacker { slots, words: free.len().max(1) }
+        StatePacker {
+            slots,
+            words: free.len().max(1),
+        }
     }
 
     /// A packer for the variables of `task`.
@@ -126,13 +140,18 @@ impl StatePacker {
     pub fn set(&self, packed: &mut [u64], var: usize, value: u32) {
         let slot = self.slots[var];
         let word = &mut packed[slot.word as usize];
-        *word = (*word & !(slot.mask << slot.shift)) | ((u64::from(value) & slot.mask) << slot.shift);
+        *word =
+            (*word & !(slot.mask << slot.shift)) | ((u64::from(value) & slot.mask) << slot.shift);
     }
 
     /// The word, the bits to clear and the bits to set that write `value` into `var`.
     pub(crate) fn write_mask(&self, var: usize, value: u32) -> (u32, u64, u64) {
         let slot = self.slots[var];
-        (slot.word, slot.mask << slot.shift, (u64::from(value) & slot.mask) << slot.shift)
+        (
+            slot.word,
+            slot.mask << slot.shift,
+            (u64::from(value) & slot.mask) << slot.shift,
+        )
     }
 }
 
@@ -158,7 +177,12 @@ pub struct StateRegistry {
 impl StateRegistry {
     /// An empty registry for packed states of `words_per_state` words.
     pub fn new(words_per_state: usize) -> StateRegistry {
-        StateRegistry { words: words_per_state, arena: Vec::new(), len: 0, table: HashTable::new() }
+        StateRegistry {
+            words: words_per_state,
+            arena: Vec::new(),
+            len: 0,
+            table: HashTable::new(),
+        }
     }
 
     /// The number of registered states.
@@ -242,7 +266,9 @@ mod tests {
 
     #[test]
     fn packing_round_trip_with_odd_domains() {
-        let sizes = [3, 5, 1, 7, 2, 100_000, 33, 1, 4, 9, 17, 65, 129, 3, 3, 3, 5, 1_000_003, 2, 2];
+        let sizes = [
+            3, 5, 1, 7, 2, 100_000, 33, 1, 4, 9, 17, 65, 129, 3, 3, 3, 5, 1_000_003, 2, 2,
+        ];
         let packer = StatePacker::new(&sizes);
         let total_bits: u32 = sizes.iter().map(|&s| bits_for(s)).sum();
         assert!(packer.words_per_state() >= total_bits.div_ceil(64) as usize);
@@ -254,7 +280,9 @@ mod tests {
             let state: Vec<u32> = sizes
                 .iter()
                 .map(|&s| {
-                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
                     ((seed >> 33) % u64::from(s)) as u32
                 })
                 .collect();
@@ -282,8 +310,15 @@ mod tests {
         let packer = StatePacker::new(&sizes);
         // Two 32-bit variables fill one word; 130 binary variables need three more.
         assert_eq!(packer.words_per_state(), 4);
-        let state: Vec<u32> =
-            (0..sizes.len()).map(|i| if i < 2 { u32::MAX - 1 - i as u32 } else { (i % 2) as u32 }).collect();
+        let state: Vec<u32> = (0..sizes.len())
+            .map(|i| {
+                if i < 2 {
+                    u32::MAX - 1 - i as u32
+                } else {
+                    (i % 2) as u32
+                }
+            })
+            .collect();
         let mut packed = vec![0; 4];
         packer.pack(&state, &mut packed);
         let mut back = vec![0; sizes.len()];

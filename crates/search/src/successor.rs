@@ -41,7 +41,11 @@ impl SuccessorGenerator {
     /// The generator for `task`, whose preconditions must be sorted by variable with
     /// values inside their domains (as [`Task::validate`] checks).
     pub fn new(task: &Task) -> SuccessorGenerator {
-        let domain = |var: u32| task.variables.get(var as usize).map_or(0, |v| v.domain_size());
+        let domain = |var: u32| {
+            task.variables
+                .get(var as usize)
+                .map_or(0, |v| v.domain_size())
+        };
         let mut nodes = vec![empty_node()];
         let mut children: Vec<u32> = Vec::new();
         let mut ops: Vec<OpId> = Vec::new();
@@ -59,8 +63,16 @@ impl SuccessorGenerator {
                     rest.push((op, pos));
                 }
             }
-            let mut this = Node { ops_start, ops_end: ops.len() as u32, ..empty_node() };
-            if let Some(var) = rest.iter().map(|&(op, pos)| pre(op)[pos as usize].var.0).min() {
+            let mut this = Node {
+                ops_start,
+                ops_end: ops.len() as u32,
+                ..empty_node()
+            };
+            if let Some(var) = rest
+                .iter()
+                .map(|&(op, pos)| pre(op)[pos as usize].var.0)
+                .min()
+            {
                 let size = domain(var) as usize;
                 let mut groups: Vec<Vec<(u32, u32)>> = vec![Vec::new(); size];
                 let mut dont_care = Vec::new();
@@ -95,7 +107,12 @@ impl SuccessorGenerator {
             }
             nodes[node as usize] = this;
         }
-        SuccessorGenerator { nodes, children, ops, stack: Vec::new() }
+        SuccessorGenerator {
+            nodes,
+            children,
+            ops,
+            stack: Vec::new(),
+        }
     }
 
     /// Replaces `out` with the operators applicable in `state` (one value per variable),
@@ -128,7 +145,13 @@ impl SuccessorGenerator {
 }
 
 fn empty_node() -> Node {
-    Node { var: NONE, children_start: 0, dont_care: NONE, ops_start: 0, ops_end: 0 }
+    Node {
+        var: NONE,
+        children_start: 0,
+        dont_care: NONE,
+        ops_start: 0,
+        ops_end: 0,
+    }
 }
 
 #[cfg(test)]
@@ -141,7 +164,10 @@ pub(crate) mod tests {
 
     impl Rng {
         pub(crate) fn below(&mut self, n: u32) -> u32 {
-            self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            self.0 = self
+                .0
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((self.0 >> 33) % u64::from(n.max(1))) as u32
         }
     }
@@ -196,8 +222,11 @@ pub(crate) mod tests {
             let task = random_task(&mut rng, 1 + round % 12, round * 3 % 60);
             let mut generator = SuccessorGenerator::new(&task);
             for _ in 0..50 {
-                let state: Vec<u32> =
-                    task.variables.iter().map(|v| rng.below(v.domain_size())).collect();
+                let state: Vec<u32> = task
+                    .variables
+                    .iter()
+                    .map(|v| rng.below(v.domain_size()))
+                    .collect();
                 generator.applicable(&state, &mut out);
                 let mut got = out.clone();
                 got.sort();

@@ -118,7 +118,10 @@ pub fn translate(
     }
     let groups = invariants::mutex_groups(&model, &grounding);
     stats.mutex_groups = groups.len();
-    let result = sas::build(&model, &grounding, &groups)?;
+    let result = match sas::build(&model, &grounding, &groups)? {
+        sas::Built::Task(result) => result,
+        sas::Built::Unsolvable(reason) => return Ok(Translation::Unsolvable { reason, stats }),
+    };
     stats.variables_before_relevance = result.variables_before_relevance;
     result
         .task

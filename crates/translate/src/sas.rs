@@ -7,7 +7,7 @@
 //! multiplying operators out: atoms that occur negated in a precondition or the goal, and
 //! atoms that some action deletes without requiring them and without setting another
 //! value of the group. Finally, variables that cannot influence the goal (not ancestors
-//! of a goal variable in the causal graph) are removed, with the operators left without
+//! of a goal variable in the causal graph of precondition-to-effect arcs) are removed, with the operators left without
 //! effects.
 
 use rustc_hash::FxHashSet;
@@ -32,11 +32,17 @@ pub(crate) struct SasResult {
     pub variables_before_relevance: usize,
 }
 
+/// A task, or the finding that the goal is contradictory.
+pub(crate) enum Built {
+    Task(SasResult),
+    Unsolvable(String),
+}
+
 pub(crate) fn build(
     model: &Model,
     g: &Grounding,
     groups: &[Vec<AtomId>],
-) -> Result<SasResult, TranslateError> {
+) -> Result<Built, TranslateError> {
     let n = g.atoms.len();
     // Atoms that must stay binary.
     let mut must_be_binary = vec![false; n];
@@ -225,6 +231,12 @@ pub(crate) fn build(
         goal.push(Fact::new(VarId(s.var), value));
     }
     goal.sort_unstable();
+    goal.dedup();
+    if goal.windows(2).any(|w| w[0].var == w[1].var) {
+        return Ok(Built::Unsolvable(
+            "the goal requires two mutually exclusive atoms".into(),
+        ));
+    }
 
     let mutexes: Vec<Vec<Fact>> = groups
         .iter()
@@ -245,10 +257,10 @@ pub(crate) fn build(
         use_costs: model.use_costs,
     };
     let variables_before_relevance = task.variables.len();
-    Ok(SasResult {
+    Ok(Built::Task(SasResult {
         task: keep_relevant(task),
         variables_before_relevance,
-    })
+    }))
 }
 
 /// Drops atoms of `group` that some action deletes without requiring them and without
@@ -302,14 +314,15 @@ fn action_name(model: &Model, a: &crate::ground::GroundAction) -> String {
 }
 
 /// Keeps the variables that are goal variables or ancestors of one in the causal graph
-/// (arcs from precondition to effect variables and between effect variables of an
-/// operator), and renumbers them.
+/// (arcs from an operator's precondition variables to its effect variables), and
+/// renumbers them: a variable no relevant operator reads can never matter for reaching
+/// the goal, even if relevant operators also change it.
 fn keep_relevant(task: Task) -> Task {
     let nvars = task.variables.len();
     let mut parents: Vec<Vec<u32>> = vec![Vec::new(); nvars];
     for op in &task.operators {
         for e in &op.effects {
-            for p in op.preconditions.iter().chain(&op.effects) {
+            for p in &op.preconditions {
                 if p.var != e.var {
                     parents[e.var.index()].push(p.var.0);
                 }

@@ -334,7 +334,7 @@ fn search_sas(task: &task::Task) -> Option<u64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(600))]
+    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn translation_preserves_optimal_cost(seed in any::<u64>()) {

@@ -1,0 +1,489 @@
+//! Property tests on small random tasks against an explicit-state oracle: uniform-cost
+//! search over every state for the optimal cost, and backward Dijkstra for h*.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
+
+use std::collections::{BinaryHeap, HashMap};
+
+use proptest::prelude::*;
+use search::{astar, replay, Blind, HMax, Heuristic, Outcome, SearchLimits, SearchResult};
+use task::{Fact, OpId, Operator, Task, VarId, Variable};
+
+/// A partial assignment over variables of these domain sizes.
+fn partial(sizes: &[u32], density: f64) -> impl Strategy<Value = Vec<Fact>> {
+    let per_var: Vec<_> = sizes
+        .iter()
+        .map(|&s| proptest::option::weighted(density, 0..s))
+        .collect();
+    per_var.prop_map(|values| {
+        values
+            .into_iter()
+            .enumerate()
+            .filter_map(|(v, x)| x.map(|x| Fact::new(VarId(v as u32), x)))
+            .collect()
+    })
+}
+
+/// What an operator does with one variable.
+#[derive(Debug, Clone)]
+enum Role {
+    Untouched,
+    /// A precondition the operator leaves alone.
+    Prevail(u32),
+    /// An effect, maybe with a precondition on the old value.
+    Change(Option<u32>, u32),
+}
+
+/// An operator over variables of these domain sizes, shaped like a transition in a
+/// domain transition graph, so that operators chain into longer plans.
+fn operator(sizes: &[u32]) -> impl Strategy<Value = (Vec<Fact>, Vec<Fact>)> {
+    let roles: Vec<_> = sizes
+        .iter()
+        .map(|&s| {
+            prop_oneof![
+                8 => Just(Role::Untouched),
+                1 => (0..s).prop_map(Role::Prevail),
+                6 => (proptest::option::weighted(0.6, 0..s), 0..s).prop_map(|(p, e)| Role::Change(p, e)),
+            ]
+        })
+        .collect();
+    roles.prop_map(|roles| {
+        let (mut pre, mut eff) = (Vec::new(), Vec::new());
+        for (v, role) in roles.into_iter().enumerate() {
+            let var = VarId(v as u32);
+            match role {
+                Role::Untouched => {}
+                Role::Prevail(x) => pre.push(Fact::new(var, x)),
+                Role::Change(p, e) => {
+                    pre.extend(p.map(|x| Fact::new(var, x)));
+                    eff.push(Fact::new(var, e));
+                }
+            }
+        }
+        (pre, eff)
+    })
+}
+
+/// Random valid tasks: 2-6 variables of domain sizes 2-4, 1-12 operators with costs
+/// 0-3 (zero costs included), with or without action costs. Most goals are drawn from
+/// the end of a random walk from the initial state, so that most tasks are solvable and
+/// need several steps; the others are random partial assignments.
+fn tasks() -> impl Strategy<Value = Task> {
+    proptest::collection::vec(2u32..=4, 2..=6).prop_flat_map(|sizes| {
+        let op = (operator(&sizes), 0u64..=3).prop_map(|((pre, eff), cost)| (pre, eff, cost));
+        let init: Vec<_> = sizes.iter().map(|&s| 0..s).collect();
+        (
+            Just(sizes.clone()),
+            proptest::collection::vec(op, 1..=12),
+            init,
+            partial(&sizes, 0.4),
+            proptest::bool::weighted(0.7),
+            (proptest::bool::weighted(0.8), any::<u64>(), 1usize..=10),
+        )
+            .prop_map(
+                |(sizes, ops, initial_state, goal, use_costs, (walk, seed, steps))| {
+                    let mut task = Task {
+                        variables: sizes
+                            .iter()
+                            .enumerate()
+                            .map(|(i, &s)| Variable {
+                                name: format!("var{i}"),
+                                value_names: (0..s).map(|v| format!("v{v}")).collect(),
+                            })
+                            .collect(),
+                        mutexes: vec![],
+                        initial_state,
+                        goal,
+                        operators: ops
+                            .into_iter()
+                            .enumerate()
+                            .map(|(i, (preconditions, effects, cost))| Operator {
+                                name: format!("op{i}"),
+                                preconditions,
+                                effects,
+                                cost,
+                            })
+                            .collect(),
+                        use_costs,
+                    };
+                    if walk {
+                        if let Some(goal) = random_walk_goal(&task, seed, steps) {
+                            task.goal = goal;
+                        }
+                    }
+                    task.validate().unwrap();
+                    task
+                },
+            )
+    })
+}
+
+/// A goal drawn from the state a random walk of up to `steps` state-changing steps ends
+/// in: the facts the walk changed and some others; `None` if the walk changed nothing.
+fn random_walk_goal(task: &Task, mut seed: u64, steps: usize) -> Option<Vec<Fact>> {
+    let mut next = |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 33) as usize % n.max(1)
+    };
+    let mut state = task.initial_state.clone();
+    for _ in 0..steps {
+        let applicable: Vec<&Operator> = task
+            .operators
+            .iter()
+            .filter(|op| {
+                task.is_applicable(op, &state)
+                    && op.effects.iter().any(|f| state[f.var.index()] != f.value)
+            })
+            .collect();
+        if applicable.is_empty() {
+            break;
+        }
+        for f in &applicable[next(applicable.len())].effects {
+            state[f.var.index()] = f.value;
+        }
+    }
+    if state == task.initial_state {
+        return None;
+    }
+    let goal = state
+        .iter()
+        .enumerate()
+        .filter(|&(v, &x)| x != task.initial_state[v] || next(3) == 0)
+        .map(|(v, &x)| Fact::new(VarId(v as u32), x))
+        .collect();
+    Some(goal)
+}
+
+/// The explicit state space: states numbered in mixed radix, edges with costs.
+struct Space {
+    states: Vec<Vec<u32>>,
+    index: HashMap<Vec<u32>, usize>,
+    edges: Vec<Vec<(usize, u64)>>,
+}
+
+impl Space {
+    fn new(task: &Task) -> Space {
+        let mut states = vec![vec![]];
+        for v in &task.variables {
+            states = states
+                .into_iter()
+                .flat_map(|s: Vec<u32>| {
+                    (0..v.domain_size()).map(move |x| {
+                        let mut t = s.clone();
+                        t.push(x);
+                        t
+                    })
+                })
+                .collect();
+        }
+        let index: HashMap<Vec<u32>, usize> = states
+            .iter()
+            .cloned()
+            .enumerate()
+            .map(|(i, s)| (s, i))
+            .collect();
+        let edges = states
+            .iter()
+            .map(|s| {
+                task.operators
+                    .iter()
+                    .filter(|op| task.is_applicable(op, s))
+                    .map(|op| {
+                        let mut t = s.clone();
+                        for f in &op.effects {
+                            t[f.var.index()] = f.value;
+                        }
+                        (index[&t], task.cost(op))
+                    })
+                    .collect()
+            })
+            .collect();
+        Space {
+            states,
+            index,
+            edges,
+        }
+    }
+
+    /// Dijkstra from `sources` over `edges`.
+    fn dijkstra(edges: &[Vec<(usize, u64)>], sources: &[usize]) -> Vec<Option<u64>> {
+        let mut dist = vec![None; edges.len()];
+        let mut queue = BinaryHeap::new();
+        for &s in sources {
+            dist[s] = Some(0);
+            queue.push(std::cmp::Reverse((0, s)));
+        }
+        while let Some(std::cmp::Reverse((d, s))) = queue.pop() {
+            if dist[s].is_some_and(|best| d > best) {
+                continue;
+            }
+            for &(t, c) in &edges[s] {
+                if dist[t].is_none_or(|best| d + c < best) {
+                    dist[t] = Some(d + c);
+                    queue.push(std::cmp::Reverse((d + c, t)));
+                }
+            }
+        }
+        dist
+    }
+
+    /// Distances from the initial state.
+    fn forward(&self, task: &Task) -> Vec<Option<u64>> {
+        Space::dijkstra(&self.edges, &[self.index[&task.initial_state]])
+    }
+
+    /// h*: the cheapest cost from each state to a goal state.
+    fn h_star(&self, task: &Task) -> Vec<Option<u64>> {
+        let mut reverse = vec![Vec::new(); self.edges.len()];
+        for (s, out) in self.edges.iter().enumerate() {
+            for &(t, c) in out {
+                reverse[t].push((s, c));
+            }
+        }
+        let goals: Vec<usize> = (0..self.states.len())
+            .filter(|&s| task.is_goal(&self.states[s]))
+            .collect();
+        Space::dijkstra(&reverse, &goals)
+    }
+}
+
+fn run<H: Heuristic + ?Sized>(task: &Task, h: &mut H) -> SearchResult {
+    astar(task, h, &SearchLimits::default(), None).unwrap()
+}
+
+fn cost(result: &SearchResult) -> Option<u64> {
+    match &result.outcome {
+        Outcome::Solved(plan) => Some(plan.cost),
+        Outcome::Unsolvable => None,
+        other => panic!("unexpected outcome {other:?}"),
+    }
+}
+
+/// The plan is valid, reaches the goal, and costs what it says.
+fn check_plan(task: &Task, result: &SearchResult) {
+    if let Outcome::Solved(plan) = &result.outcome {
+        let end = replay(task, &plan.operators).unwrap();
+        assert!(task.is_goal(&end));
+        let sum: u64 = plan
+            .operators
+            .iter()
+            .map(|op| task.cost(&task.operators[op.index()]))
+            .sum();
+        assert_eq!(plan.cost, sum);
+    }
+}
+
+/// An admissible, inconsistent heuristic: h* on some states, 0 on others (as `seed`
+/// picks them), None exactly on dead ends.
+struct Erratic {
+    h_star: HashMap<Vec<u32>, Option<u64>>,
+    seed: u64,
+}
+
+impl Erratic {
+    fn new(space: &Space, task: &Task, seed: u64) -> Erratic {
+        let h_star = space.h_star(task);
+        Erratic {
+            h_star: space.states.iter().cloned().zip(h_star).collect(),
+            seed,
+        }
+    }
+}
+
+impl Heuristic for Erratic {
+    fn name(&self) -> &str {
+        "erratic"
+    }
+
+    fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+        let h = self.h_star[state]?;
+        let mix = state.iter().fold(self.seed, |a, &v| {
+            (a ^ u64::from(v)).wrapping_mul(0x9e37_79b9_7f4a_7c15)
+        });
+        Some(if mix >> 63 == 1 { h } else { 0 })
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, ..ProptestConfig::default() })]
+
+    #[test]
+    fn astar_is_optimal(task in tasks()) {
+        let space = Space::new(&task);
+        let forward = space.forward(&task);
+        let optimal = (0..space.states.len())
+            .filter(|&s| task.is_goal(&space.states[s]))
+            .filter_map(|s| forward[s])
+            .min();
+
+        let hmax = run(&task, &mut HMax::new(&task).unwrap());
+        let blind = run(&task, &mut Blind::new(&task));
+        prop_assert_eq!(cost(&hmax), optimal);
+        prop_assert_eq!(cost(&blind), optimal);
+        check_plan(&task, &hmax);
+        check_plan(&task, &blind);
+
+        // Every registered state was evaluated exactly once; every dead end is one.
+        for result in [&hmax, &blind] {
+            let s = &result.statistics;
+            prop_assert_eq!(s.registered_states, s.evaluated);
+            prop_assert!(s.expanded <= s.evaluated);
+            prop_assert!(s.expanded_until_last_jump <= s.expanded);
+            prop_assert!(s.evaluated_until_last_jump <= s.evaluated);
+            prop_assert!(s.generated_until_last_jump <= s.generated);
+        }
+        prop_assert_eq!(blind.statistics.dead_ends, 0);
+
+        // An inconsistent heuristic makes the search reopen states, and it stays optimal.
+        let result = run(&task, &mut Erratic::new(&space, &task, 1));
+        prop_assert_eq!(cost(&result), optimal);
+        check_plan(&task, &result);
+    }
+
+    #[test]
+    fn hmax_is_admissible(task in tasks()) {
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        let mut hmax = HMax::new(&task).unwrap();
+        for (s, state) in space.states.iter().enumerate() {
+            match (hmax.evaluate(state), h_star[s]) {
+                (Some(h), Some(exact)) => prop_assert!(h <= exact, "h = {} > h* = {} in {:?}", h, exact, state),
+                (None, Some(exact)) => prop_assert!(false, "dead end claimed in {:?} with h* = {}", state, exact),
+                (_, None) => {}
+            }
+        }
+        // The goal is free wherever it holds.
+        for state in space.states.iter().filter(|s| task.is_goal(s)) {
+            prop_assert_eq!(hmax.evaluate(state), Some(0));
+        }
+    }
+
+    #[test]
+    fn search_is_deterministic(task in tasks()) {
+        for _ in 0..2 {
+            let mut first = run(&task, &mut HMax::new(&task).unwrap());
+            let mut second = run(&task, &mut HMax::new(&task).unwrap());
+            first.statistics.search_time = Default::default();
+            second.statistics.search_time = Default::default();
+            prop_assert_eq!(first, second);
+        }
+    }
+}
+
+/// A tiny task with a zero-cost cycle and a cheaper path that is found late.
+#[test]
+fn zero_cost_cycles_and_reopening() {
+    let op = |name: &str, pre: u32, eff: u32, cost: u64| Operator {
+        name: name.into(),
+        preconditions: vec![Fact::new(VarId(0), pre)],
+        effects: vec![Fact::new(VarId(0), eff)],
+        cost,
+    };
+    let task = Task {
+        variables: vec![Variable {
+            name: "at".into(),
+            value_names: (0..4).map(|i| format!("p{i}")).collect(),
+        }],
+        mutexes: vec![],
+        initial_state: vec![0],
+        goal: vec![Fact::new(VarId(0), 3)],
+        operators: vec![
+            op("loop-a", 0, 1, 0),
+            op("loop-b", 1, 0, 0),
+            op("expensive", 0, 2, 3),
+            op("cheap-1", 1, 2, 2),
+            op("finish", 2, 3, 2),
+        ],
+        use_costs: true,
+    };
+    let result = run(&task, &mut Blind::new(&task));
+    let Outcome::Solved(plan) = result.outcome else {
+        panic!("solvable")
+    };
+    assert_eq!(plan.cost, 4);
+    assert_eq!(plan.operators, vec![OpId(0), OpId(3), OpId(4)]);
+
+    // With a heuristic that is admissible but not consistent (h(p1) high, h(p2) low),
+    // p2 is first closed through the expensive path and then reopened.
+    struct Table;
+    impl Heuristic for Table {
+        fn name(&self) -> &str {
+            "table"
+        }
+        fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+            Some([0, 4, 0, 0][state[0] as usize])
+        }
+    }
+    let result = run(&task, &mut Table);
+    let Outcome::Solved(plan) = result.outcome else {
+        panic!("solvable")
+    };
+    assert_eq!(plan.cost, 4);
+    assert_eq!(result.statistics.reopened, 1);
+}
+
+/// Random explicit graphs (states of three 4-valued variables, operators from one state
+/// to another, goals among the reachable states) searched with an inconsistent heuristic:
+/// A* must reopen states to stay optimal, and does so in many of them.
+#[test]
+fn reopening_keeps_astar_optimal_on_random_graphs() {
+    let mut seed = 99u64;
+    let mut next = |n: u64| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 33) % n
+    };
+    let facts = |code: u64| {
+        (0..3)
+            .map(|v| Fact::new(VarId(v), (code >> (2 * v)) as u32 % 4))
+            .collect::<Vec<_>>()
+    };
+    let mut reopened_tasks = 0;
+    for round in 0..1000 {
+        let operators = (0..40 + next(80))
+            .map(|i| Operator {
+                name: format!("e{i}"),
+                preconditions: facts(next(64)),
+                effects: facts(next(64)),
+                cost: next(10),
+            })
+            .collect();
+        let mut task = Task {
+            variables: (0..3)
+                .map(|i| Variable {
+                    name: format!("v{i}"),
+                    value_names: (0..4).map(|x| format!("x{x}")).collect(),
+                })
+                .collect(),
+            mutexes: vec![],
+            initial_state: facts(next(64)).iter().map(|f| f.value).collect(),
+            goal: vec![],
+            operators,
+            use_costs: true,
+        };
+        let space = Space::new(&task);
+        let forward = space.forward(&task);
+        let reachable: Vec<usize> = (0..space.states.len())
+            .filter(|&s| forward[s].is_some())
+            .collect();
+        let goal = reachable[next(reachable.len() as u64) as usize];
+        task.goal = space.states[goal]
+            .iter()
+            .enumerate()
+            .map(|(v, &x)| Fact::new(VarId(v as u32), x))
+            .collect();
+        let result = run(&task, &mut Erratic::new(&space, &task, round));
+        assert_eq!(cost(&result), forward[goal], "round {round}");
+        check_plan(&task, &result);
+        if result.statistics.reopened > 0 {
+            reopened_tasks += 1;
+        }
+    }
+    assert!(
+        reopened_tasks >= 10,
+        "only {reopened_tasks} searches reopened a state"
+    );
+}

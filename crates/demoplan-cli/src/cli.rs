@@ -40,6 +40,40 @@ pub enum Command {
         #[arg(long)]
         stdout: bool,
     },
+    /// Find an optimal plan, speaking Fast Downward's protocol.
+    ///
+    /// Input: `[DOMAIN] PROBLEM` in PDDL, or a Fast Downward `output.sas` file. The plan is
+    /// written to the plan file, one `(action args)` per line and a final
+    /// `; cost = N (general cost)` or `(unit cost)` line. Exit codes as Fast Downward's: 0
+    /// solved, 11 unsolvable, 22 out of memory, 23 out of time, 31/33 input errors, 34
+    /// unsupported, 36 bad command line.
+    Plan {
+        /// `[DOMAIN] PROBLEM`, or `FILE.sas`.
+        #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+        files: Vec<PathBuf>,
+        /// The search, e.g. `astar(blind())`, `astar(hmax())`.
+        #[arg(long, value_name = "SEARCH", required_unless_present = "alias")]
+        search: Option<String>,
+        /// A named configuration, e.g. `seq-opt-lmcut`.
+        #[arg(long, value_name = "NAME", conflicts_with = "search")]
+        alias: Option<String>,
+        /// Where to write the plan.
+        #[arg(long, value_name = "FILE", default_value = "sas_plan")]
+        plan_file: PathBuf,
+        /// Time limit for the whole run, e.g. `30s`, `5m`, `1h` (seconds without a unit).
+        #[arg(long, value_name = "TIME")]
+        overall_time_limit: Option<String>,
+        /// Memory limit for the whole run, e.g. `512M`, `3G` (bytes without a unit).
+        #[arg(long, value_name = "MEMORY")]
+        overall_memory_limit: Option<String>,
+        /// Also write the run's statistics as JSON.
+        #[arg(long, value_name = "FILE")]
+        stats_json: Option<PathBuf>,
+        /// Validate the plan with the independent validator before reporting success
+        /// (PDDL input only).
+        #[arg(long)]
+        validate: bool,
+    },
     /// Translate a PDDL task into a finite-domain task, as Fast Downward's translator does.
     ///
     /// Prints the sizes ("Translator variables: N", ...) and writes the task in Fast

@@ -13,8 +13,16 @@ impl ExitCode {
     pub const CHECK_FAILED: ExitCode = ExitCode(1);
     /// Fast Downward's SEARCH_UNSOLVABLE: the task has no plan.
     pub const UNSOLVABLE: ExitCode = ExitCode(11);
+    /// Fast Downward's SEARCH_OUT_OF_MEMORY: the memory limit was reached.
+    pub const OUT_OF_MEMORY: ExitCode = ExitCode(22);
+    /// Fast Downward's SEARCH_OUT_OF_TIME: the time limit was reached.
+    pub const OUT_OF_TIME: ExitCode = ExitCode(23);
     /// Fast Downward's TRANSLATE_INPUT_ERROR: the PDDL is malformed or inconsistent.
     pub const INPUT_ERROR: ExitCode = ExitCode(31);
+    /// Fast Downward's SEARCH_CRITICAL_ERROR: a plan failed validation (a bug).
+    pub const CRITICAL_SEARCH_ERROR: ExitCode = ExitCode(32);
+    /// Fast Downward's SEARCH_INPUT_ERROR: a bad search string or output.sas file.
+    pub const SEARCH_INPUT_ERROR: ExitCode = ExitCode(33);
     /// Fast Downward's SEARCH_UNSUPPORTED: valid PDDL outside the supported fragment.
     pub const UNSUPPORTED: ExitCode = ExitCode(34);
     /// Fast Downward's DRIVER_CRITICAL_ERROR: an I/O failure writing output.

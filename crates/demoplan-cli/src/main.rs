@@ -6,11 +6,15 @@ mod commands;
 mod diagnostic;
 mod exit;
 mod input;
+mod memory;
 mod output;
 
 use std::io::Write;
 
 use clap::Parser;
+
+#[global_allocator]
+static ALLOCATOR: memory::CountingAllocator = memory::CountingAllocator;
 
 use diagnostic::Failure;
 use exit::ExitCode;
@@ -42,6 +46,25 @@ fn main() {
 fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
     match cli.command {
         cli::Command::Check { files } => commands::check::run(&files),
+        cli::Command::Plan {
+            files,
+            search,
+            alias,
+            plan_file,
+            overall_time_limit,
+            overall_memory_limit,
+            stats_json,
+            validate,
+        } => commands::plan::run(commands::plan::PlanArgs {
+            files,
+            search,
+            alias,
+            plan_file,
+            time_limit: overall_time_limit,
+            memory_limit: overall_memory_limit,
+            stats_json,
+            validate,
+        }),
         cli::Command::Translate { files, sas_file } => commands::translate::run(&files, &sas_file),
         cli::Command::Fmt {
             files,

@@ -2,5 +2,6 @@
 
 pub mod check;
 pub mod fmt;
+pub mod plan;
 pub mod translate;
 pub mod validate;

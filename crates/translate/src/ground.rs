@@ -509,3 +509,117 @@ pub(crate) fn atom_text(model: &Model, pred: PredId, args: impl Iterator<Item = 
         names.join(", ")
     )
 }
+
+impl Grounding {
+    /// Removes the actions whose preconditions require two atoms of one mutex group
+    /// (they are never applicable), then recomputes relaxed reachability on what is left:
+    /// atoms only those actions added become unreachable and are no longer fluent atoms
+    /// of the task; atoms true initially and never deleted become constants. Returns
+    /// false if the goal became unreachable (or requires a constant to be false).
+    pub(crate) fn prune_with_mutexes(&mut self, groups: &[Vec<AtomId>]) -> bool {
+        let n = self.atoms.len();
+        let mut groups_of: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for (i, group) in groups.iter().enumerate() {
+            for &a in group {
+                groups_of[a as usize].push(i as u32);
+            }
+        }
+        let mut seen_group = vec![u32::MAX; groups.len()];
+        let mut keep = vec![true; self.actions.len()];
+        for (i, action) in self.actions.iter().enumerate() {
+            'pre: for &a in &action.pre {
+                for &grp in &groups_of[a as usize] {
+                    if seen_group[grp as usize] == i as u32 {
+                        keep[i] = false;
+                        break 'pre;
+                    }
+                    seen_group[grp as usize] = i as u32;
+                }
+            }
+        }
+        // Relaxed reachability over the remaining actions, by precondition counters.
+        let mut reached = vec![false; n];
+        let mut missing: Vec<usize> = self.actions.iter().map(|a| a.pre.len()).collect();
+        let mut waiting: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for (i, action) in self.actions.iter().enumerate() {
+            for &a in &action.pre {
+                waiting[a as usize].push(i as u32);
+            }
+        }
+        let mut queue: Vec<AtomId> = Vec::new();
+        let mut applicable: Vec<bool> = vec![false; self.actions.len()];
+        let mut ready: Vec<u32> = Vec::new();
+        for &a in &self.init {
+            if !reached[a as usize] {
+                reached[a as usize] = true;
+                queue.push(a);
+            }
+        }
+        for (i, m) in missing.iter().enumerate() {
+            if *m == 0 && keep[i] {
+                ready.push(i as u32);
+            }
+        }
+        loop {
+            while let Some(i) = ready.pop() {
+                if applicable[i as usize] {
+                    continue;
+                }
+                applicable[i as usize] = true;
+                for &a in &self.actions[i as usize].add {
+                    if !reached[a as usize] {
+                        reached[a as usize] = true;
+                        queue.push(a);
+                    }
+                }
+            }
+            let Some(a) = queue.pop() else { break };
+            for &i in &waiting[a as usize] {
+                missing[i as usize] -= 1;
+                if missing[i as usize] == 0 && keep[i as usize] {
+                    ready.push(i);
+                }
+            }
+        }
+        let mut index = 0;
+        self.actions.retain(|_| {
+            index += 1;
+            applicable[index - 1]
+        });
+        for a in 0..n {
+            if self.fluent[a] && !reached[a] {
+                self.fluent[a] = false;
+            }
+        }
+        // Atoms true initially that no action deletes are true in every reachable state:
+        // constants, compiled away like static facts.
+        let mut deleted = vec![false; n];
+        for action in &self.actions {
+            for &d in &action.del {
+                deleted[d as usize] = true;
+            }
+        }
+        let mut constant = vec![false; n];
+        for &a in &self.init {
+            if self.fluent[a as usize] && !deleted[a as usize] {
+                constant[a as usize] = true;
+                self.fluent[a as usize] = false;
+            }
+        }
+        if self.goal_neg.iter().any(|&a| constant[a as usize]) {
+            return false;
+        }
+        self.actions.retain(|a| !a.neg.iter().any(|&x| constant[x as usize]));
+        self.init.retain(|&a| !constant[a as usize]);
+        self.goal_pos.retain(|&a| !constant[a as usize]);
+        let fluent = &self.fluent;
+        for action in &mut self.actions {
+            action.pre.retain(|&d| fluent[d as usize]);
+            action.add.retain(|&d| fluent[d as usize]);
+            action.del.retain(|&d| fluent[d as usize]);
+            action.neg.retain(|&d| fluent[d as usize]);
+        }
+        self.goal_neg.retain(|&d| fluent[d as usize]);
+        self.goal_pos.iter().all(|&g| fluent[g as usize])
+    }
+}

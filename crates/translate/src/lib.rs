@@ -116,8 +116,20 @@ pub fn translate(
     if let Some(reason) = grounding.unsolvable.clone() {
         return Ok(Translation::Unsolvable { reason, stats });
     }
+    let mut grounding = grounding;
     let groups = invariants::mutex_groups(&model, &grounding);
+    if !grounding.prune_with_mutexes(&groups) {
+        let reason = "the goal is not reachable by actions whose preconditions are not mutex";
+        return Ok(Translation::Unsolvable { reason: reason.into(), stats });
+    }
+    // Groups over the atoms that stayed reachable.
+    let groups: Vec<Vec<ground::AtomId>> = groups
+        .into_iter()
+        .map(|g| g.into_iter().filter(|&a| grounding.fluent[a as usize]).collect::<Vec<_>>())
+        .filter(|g| g.len() >= 2)
+        .collect();
     stats.mutex_groups = groups.len();
+    stats.ground_actions = grounding.actions.len();
     let result = match sas::build(&model, &grounding, &groups)? {
         sas::Built::Task(result) => result,
         sas::Built::Unsolvable(reason) => return Ok(Translation::Unsolvable { reason, stats }),

@@ -609,7 +609,8 @@ impl Grounding {
         if self.goal_neg.iter().any(|&a| constant[a as usize]) {
             return false;
         }
-        self.actions.retain(|a| !a.neg.iter().any(|&x| constant[x as usize]));
+        self.actions
+            .retain(|a| !a.neg.iter().any(|&x| constant[x as usize]));
         self.init.retain(|&a| !constant[a as usize]);
         self.goal_pos.retain(|&a| !constant[a as usize]);
         let fluent = &self.fluent;

@@ -120,12 +120,19 @@ pub fn translate(
     let groups = invariants::mutex_groups(&model, &grounding);
     if !grounding.prune_with_mutexes(&groups) {
         let reason = "the goal is not reachable by actions whose preconditions are not mutex";
-        return Ok(Translation::Unsolvable { reason: reason.into(), stats });
+        return Ok(Translation::Unsolvable {
+            reason: reason.into(),
+            stats,
+        });
     }
     // Groups over the atoms that stayed reachable.
     let groups: Vec<Vec<ground::AtomId>> = groups
         .into_iter()
-        .map(|g| g.into_iter().filter(|&a| grounding.fluent[a as usize]).collect::<Vec<_>>())
+        .map(|g| {
+            g.into_iter()
+                .filter(|&a| grounding.fluent[a as usize])
+                .collect::<Vec<_>>()
+        })
         .filter(|g| g.len() >= 2)
         .collect();
     stats.mutex_groups = groups.len();

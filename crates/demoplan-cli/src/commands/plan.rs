@@ -36,7 +36,9 @@ pub fn parse_time_limit(text: &str) -> Result<Option<Duration>, String> {
     };
     match number.parse::<f64>() {
         Ok(v) if v.is_finite() && v >= 0.0 => Ok(Some(Duration::from_secs_f64(v * unit))),
-        _ => Err(format!("invalid time limit `{text}`: expected e.g. 30s, 5m, 1h or infinity")),
+        _ => Err(format!(
+            "invalid time limit `{text}`: expected e.g. 30s, 5m, 1h or infinity"
+        )),
     }
 }
 
@@ -57,7 +59,9 @@ pub fn parse_memory_limit(text: &str) -> Result<Option<u64>, String> {
             .checked_mul(unit)
             .map(Some)
             .ok_or_else(|| format!("memory limit `{text}` is too large")),
-        Err(_) => Err(format!("invalid memory limit `{text}`: expected e.g. 512M, 3G or infinity")),
+        Err(_) => Err(format!(
+            "invalid memory limit `{text}`: expected e.g. 512M, 3G or infinity"
+        )),
     }
 }
 
@@ -68,14 +72,28 @@ fn is_sas_file(path: &Path) -> bool {
 pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let start = Instant::now();
     let usage = |m: String| Failure::plain(ExitCode::USAGE, m);
-    let time_limit = args.time_limit.as_deref().map(parse_time_limit).transpose().map_err(usage)?.flatten();
-    let memory_limit =
-        args.memory_limit.as_deref().map(parse_memory_limit).transpose().map_err(usage)?.flatten();
+    let time_limit = args
+        .time_limit
+        .as_deref()
+        .map(parse_time_limit)
+        .transpose()
+        .map_err(usage)?
+        .flatten();
+    let memory_limit = args
+        .memory_limit
+        .as_deref()
+        .map(parse_memory_limit)
+        .transpose()
+        .map_err(usage)?
+        .flatten();
     let search_string = match (&args.search, &args.alias) {
         (Some(s), _) => s.clone(),
         (None, Some(a)) => search::alias(a).map(str::to_string).ok_or_else(|| {
             let known: Vec<&str> = search::ALIASES.iter().map(|(name, _)| *name).collect();
-            usage(format!("unknown alias `{a}`; known aliases: {}", known.join(", ")))
+            usage(format!(
+                "unknown alias `{a}`; known aliases: {}",
+                known.join(", ")
+            ))
         })?,
         (None, None) => return Err(usage("give a search with --search or --alias".into())),
     };
@@ -85,7 +103,10 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     // run's.
     if args.plan_file.exists() {
         std::fs::remove_file(&args.plan_file).map_err(|e| {
-            Failure::plain(ExitCode::CRITICAL_ERROR, format!("cannot remove old {}: {e}", args.plan_file.display()))
+            Failure::plain(
+                ExitCode::CRITICAL_ERROR,
+                format!("cannot remove old {}: {e}", args.plan_file.display()),
+            )
         })?;
     }
 
@@ -160,7 +181,11 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         text.push_str(&format!(
             "; cost = {} ({})\n",
             plan.cost,
-            if unit_cost { "unit cost" } else { "general cost" }
+            if unit_cost {
+                "unit cost"
+            } else {
+                "general cost"
+            }
         ));
         output::write_atomically(&args.plan_file, &text)?;
         println!("Plan length: {} step(s).", plan.operators.len());
@@ -185,7 +210,8 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     }
     write_stats(&args, &report)?;
     if let (Some(_), true, Some((domain, problem))) = (plan, args.validate, &pddl_files) {
-        let invalid = crate::commands::validate::run(domain, problem, std::slice::from_ref(&args.plan_file))?;
+        let invalid =
+            crate::commands::validate::run(domain, problem, std::slice::from_ref(&args.plan_file))?;
         if invalid != ExitCode::SUCCESS {
             return Err(Failure::plain(
                 ExitCode::CRITICAL_SEARCH_ERROR,
@@ -238,9 +264,18 @@ impl Report {
             println!("Evaluated {} state(s).", s.evaluated);
             println!("Generated {} state(s).", s.generated);
             println!("Dead ends: {} state(s).", s.dead_ends);
-            println!("Expanded until last jump: {} state(s).", s.expanded_until_last_jump);
-            println!("Evaluated until last jump: {} state(s).", s.evaluated_until_last_jump);
-            println!("Generated until last jump: {} state(s).", s.generated_until_last_jump);
+            println!(
+                "Expanded until last jump: {} state(s).",
+                s.expanded_until_last_jump
+            );
+            println!(
+                "Evaluated until last jump: {} state(s).",
+                s.evaluated_until_last_jump
+            );
+            println!(
+                "Generated until last jump: {} state(s).",
+                s.generated_until_last_jump
+            );
             println!("Number of registered states: {}", s.registered_states);
             println!("Search time: {:.6}s", s.search_time.as_secs_f64());
         }

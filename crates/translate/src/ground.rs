@@ -586,10 +586,8 @@ impl Grounding {
             index += 1;
             applicable[index - 1]
         });
-        for a in 0..n {
-            if self.fluent[a] && !reached[a] {
-                self.fluent[a] = false;
-            }
+        for (fluent, reached) in self.fluent.iter_mut().zip(&reached) {
+            *fluent &= *reached;
         }
         // Atoms true initially that no action deletes are true in every reachable state:
         // constants, compiled away like static facts.

@@ -199,7 +199,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             _ => "out_of_memory",
         },
         plan: plan.map(|p| (p.operators.len(), p.cost)),
-        statistics: Some(result.statistics.clone()),
+        statistics: Some(result.statistics),
         translate_time,
         total_time: start.elapsed(),
         sizes: Some(task.sizes()),

@@ -328,3 +328,352 @@ fn validate_input_errors_use_the_pddl_exit_codes() {
         .unwrap();
     assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
 }
+
+// ---------------------------------------------------------------------------------------
+// The planner: `demoplan plan` on real benchmark instances, protocol and exit codes.
+
+/// `Plan cost: N` from a log.
+fn logged_number(log: &str, prefix: &str) -> Option<u64> {
+    log.lines()
+        .find_map(|l| l.strip_prefix(prefix))
+        .and_then(|rest| rest.split_whitespace().next())
+        .and_then(|n| n.parse().ok())
+}
+
+/// Each line of `fixtures/quick-instances.txt` names an instance of the benchmark suite
+/// and the searches to run on it; every plan must cost the known optimum and validate.
+#[test]
+fn planner_finds_optimal_validated_plans_on_a_quick_subset_of_every_domain() {
+    let suite = benchmarks::Suite::locate().unwrap();
+    let instances = suite.instances().unwrap();
+    let list = std::fs::read_to_string(fixtures().join("quick-instances.txt")).unwrap();
+    let tmp = tempdir("quick");
+    let mut domains = std::collections::BTreeSet::new();
+    let mut runs = 0;
+    for line in list
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or("").trim())
+        .filter(|l| !l.is_empty())
+    {
+        let (name, searches) = line.split_once(' ').unwrap();
+        let instance = instances
+            .iter()
+            .find(|i| format!("{}/{}", i.domain, i.name) == name)
+            .unwrap_or_else(|| panic!("{name} is not in optimal_costs.csv"));
+        domains.insert(instance.domain.clone());
+        for search in searches.split_whitespace() {
+            let plan_file = tmp.join("plan");
+            let out = demoplan()
+                .arg("plan")
+                .arg(&instance.domain_file)
+                .arg(&instance.problem_file)
+                .args(["--search", search, "--plan-file"])
+                .arg(&plan_file)
+                .arg("--validate")
+                .output()
+                .unwrap();
+            let log = String::from_utf8_lossy(&out.stdout);
+            assert_eq!(
+                out.status.code(),
+                Some(0),
+                "{name} {search}: {}",
+                transcript(&out)
+            );
+            assert_eq!(
+                logged_number(&log, "Plan cost: "),
+                Some(instance.optimal_cost),
+                "{name} {search}"
+            );
+            assert!(
+                log.contains("Plan valid"),
+                "{name} {search}: not validated\n{log}"
+            );
+            let plan = std::fs::read_to_string(&plan_file).unwrap();
+            assert!(
+                plan.ends_with(&format!(
+                    "; cost = {} (general cost)\n",
+                    instance.optimal_cost
+                )) || plan.ends_with(&format!("; cost = {} (unit cost)\n", instance.optimal_cost)),
+                "{name}: {plan}"
+            );
+            runs += 1;
+        }
+    }
+    let all: std::collections::BTreeSet<String> =
+        instances.iter().map(|i| i.domain.clone()).collect();
+    assert_eq!(
+        domains, all,
+        "the quick list must cover every benchmark domain"
+    );
+    assert!(runs >= all.len());
+}
+
+fn benchmark(domain: &str, name: &str) -> benchmarks::Instance {
+    let suite = benchmarks::Suite::locate().unwrap();
+    suite
+        .instances()
+        .unwrap()
+        .into_iter()
+        .find(|i| i.domain == domain && i.name == name)
+        .unwrap()
+}
+
+fn plan_run(args: &[&str], instance: &benchmarks::Instance, dir: &Path) -> Output {
+    demoplan()
+        .current_dir(dir)
+        .arg("plan")
+        .arg(&instance.domain_file)
+        .arg(&instance.problem_file)
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn planning_is_deterministic() {
+    let instance = benchmark("blocks", "probBLOCKS-6-2");
+    let tmp = tempdir("determinism");
+    let mut seen = Vec::new();
+    for _ in 0..2 {
+        let out = plan_run(&["--search", "astar(hmax())"], &instance, &tmp);
+        assert_eq!(out.status.code(), Some(0));
+        let log = String::from_utf8_lossy(&out.stdout).into_owned();
+        let expanded = logged_number(&log, "Expanded ");
+        seen.push((
+            std::fs::read_to_string(tmp.join("sas_plan")).unwrap(),
+            expanded,
+        ));
+    }
+    assert_eq!(seen[0], seen[1]);
+}
+
+#[test]
+fn plan_reads_fast_downwards_output_sas() {
+    let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
+    let tmp = tempdir("sas-input");
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(&sas)
+        .args(["--search", "astar(blind())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    assert_eq!(
+        logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
+        Some(6)
+    );
+    // The plan written from Fast Downward's task validates against the PDDL.
+    let check = demoplan()
+        .current_dir(&tmp)
+        .arg("validate")
+        .arg(workspace().join("examples/cubes/domain.pddl"))
+        .arg(workspace().join("examples/cubes/tower-3.pddl"))
+        .arg("sas_plan")
+        .output()
+        .unwrap();
+    assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
+}
+
+#[test]
+fn translate_writes_output_sas_that_plan_reads_back() {
+    let tmp = tempdir("translate");
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("translate")
+        .arg(workspace().join("examples/cubes/tower-3.pddl"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Translator variables: 18"));
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["plan", "output.sas", "--alias", "seq-opt-hmax"])
+        .output()
+        .unwrap();
+    // seq-opt-hmax is no alias: exit 36 with the known ones listed.
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["plan", "output.sas", "--search", "astar(hmax())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    assert_eq!(
+        logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
+        Some(6)
+    );
+}
+
+fn write_task(dir: &Path, domain: &str, problem: &str) -> (PathBuf, PathBuf) {
+    let d = dir.join("domain.pddl");
+    let p = dir.join("problem.pddl");
+    std::fs::write(&d, domain).unwrap();
+    std::fs::write(&p, problem).unwrap();
+    (d, p)
+}
+
+#[test]
+fn unsolvable_tasks_exit_11_and_leave_no_plan() {
+    let tmp = tempdir("unsolvable");
+    // Reachable when deletes are ignored, but `a` and `b` each consume `p`.
+    let (d, p) = write_task(
+        &tmp,
+        "(define (domain u) (:predicates (p) (q) (r))
+           (:action a :parameters () :precondition (p) :effect (and (q) (not (p))))
+           (:action b :parameters () :precondition (p) :effect (and (r) (not (p)))))",
+        "(define (problem u1) (:domain u) (:init (p)) (:goal (and (q) (r))))",
+    );
+    std::fs::write(tmp.join("sas_plan"), "(stale)\n").unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(&d)
+        .arg(&p)
+        .args(["--search", "astar(blind())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(11), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stdout)
+        .contains("Completely explored state space -- no solution!"));
+    assert!(!tmp.join("sas_plan").exists(), "a stale plan file survived");
+    // Not even reachable when deletes are ignored: decided before search.
+    let (d, p) = write_task(
+        &tmp,
+        "(define (domain u) (:predicates (p) (q)) (:action a :parameters () :precondition (q) :effect (p)))",
+        "(define (problem u2) (:domain u) (:init) (:goal (p)))",
+    );
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(&d)
+        .arg(&p)
+        .args(["--search", "astar(hmax())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(11), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Goal violated by relaxed reachability"));
+}
+
+#[test]
+fn limits_stop_the_search_with_exit_23_and_22_and_statistics() {
+    let instance = benchmark("gripper", "prob08");
+    let tmp = tempdir("limits");
+    let stats = tmp.join("stats.json");
+    let out = plan_run(
+        &[
+            "--search",
+            "astar(blind())",
+            "--overall-time-limit",
+            "0.3s",
+            "--stats-json",
+            stats.to_str().unwrap(),
+        ],
+        &instance,
+        &tmp,
+    );
+    assert_eq!(out.status.code(), Some(23), "{}", transcript(&out));
+    let log = String::from_utf8_lossy(&out.stdout);
+    assert!(log.contains("Time limit reached. Abort search."));
+    assert!(logged_number(&log, "Expanded ").unwrap() > 0);
+    let json = std::fs::read_to_string(&stats).unwrap();
+    assert!(json.contains("\"outcome\": \"out_of_time\""), "{json}");
+
+    let out = plan_run(
+        &[
+            "--search",
+            "astar(blind())",
+            "--overall-memory-limit",
+            "20M",
+        ],
+        &instance,
+        &tmp,
+    );
+    assert_eq!(out.status.code(), Some(22), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Memory limit has been reached."));
+}
+
+#[test]
+fn stats_json_reports_the_solved_run() {
+    let tmp = tempdir("stats");
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(workspace().join("examples/cubes/tower-3.pddl"))
+        .args([
+            "--search",
+            "astar(blind())",
+            "--stats-json",
+            "stats.json",
+            "--plan-file",
+            "my.plan",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+    for field in [
+        "\"outcome\": \"solved\"",
+        "\"plan_cost\": 6",
+        "\"plan_length\": 6",
+        "\"expanded\":",
+        "\"variables\": 18",
+    ] {
+        assert!(json.contains(field), "{field} missing in {json}");
+    }
+    assert!(tmp.join("my.plan").exists());
+}
+
+#[test]
+fn bad_search_strings_and_limits_are_rejected_before_any_work() {
+    let tmp = tempdir("bad-search");
+    let problem = workspace().join("examples/cubes/tower-3.pddl");
+    let run = |args: &[&str]| {
+        demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .arg(&problem)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let out = run(&["--search", "astar(goalcount())"]);
+    assert_eq!(out.status.code(), Some(33));
+    insta::assert_snapshot!("plan-unknown-heuristic", transcript(&out));
+    assert_eq!(run(&["--search", "astar(blind()"]).status.code(), Some(33));
+    assert_eq!(
+        run(&["--search", "astar(blind())", "--overall-time-limit", "soon"])
+            .status
+            .code(),
+        Some(36)
+    );
+    assert_eq!(
+        run(&["--search", "astar(blind())", "--overall-memory-limit", "3X"])
+            .status
+            .code(),
+        Some(36)
+    );
+    assert_eq!(run(&[]).status.code(), Some(36));
+    assert!(!tmp.join("sas_plan").exists());
+}
+
+#[test]
+fn malformed_output_sas_is_a_search_input_error() {
+    let tmp = tempdir("bad-sas");
+    std::fs::write(
+        tmp.join("bad.sas"),
+        "begin_version\n3\nend_version\nbegin_metric\n7\nend_metric\n",
+    )
+    .unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["plan", "bad.sas", "--search", "astar(blind())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(33), "{}", transcript(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("bad.sas:5"),
+        "{}",
+        transcript(&out)
+    );
+}

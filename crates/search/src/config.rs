@@ -12,15 +12,16 @@ use task::Task;
 use crate::astar::SearchError;
 use crate::heuristic::{Blind, Heuristic};
 use crate::hmax::HMax;
+use crate::lmcut::LmCut;
 
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
 
 /// The heuristics demoplan computes.
-pub const HEURISTICS: &[&str] = &["blind", "hmax"];
+pub const HEURISTICS: &[&str] = &["blind", "hmax", "lmcut"];
 
 /// Heuristics Fast Downward has that demoplan will support, but does not yet.
-pub const PLANNED_HEURISTICS: &[&str] = &["lmcut", "ipdb", "cpdbs"];
+pub const PLANNED_HEURISTICS: &[&str] = &["ipdb", "cpdbs"];
 
 /// Fast Downward's aliases that demoplan knows: name and search string.
 pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
@@ -56,6 +57,8 @@ pub enum HeuristicConfig {
     Blind,
     /// [`HMax`].
     HMax,
+    /// [`LmCut`].
+    LmCut,
 }
 
 impl HeuristicConfig {
@@ -64,6 +67,7 @@ impl HeuristicConfig {
         match self {
             HeuristicConfig::Blind => "blind",
             HeuristicConfig::HMax => "hmax",
+            HeuristicConfig::LmCut => "lmcut",
         }
     }
 
@@ -72,6 +76,7 @@ impl HeuristicConfig {
         Ok(match self {
             HeuristicConfig::Blind => Box::new(Blind::new(task)),
             HeuristicConfig::HMax => Box::new(HMax::new(task)?),
+            HeuristicConfig::LmCut => Box::new(LmCut::new(task)?),
         })
     }
 }
@@ -197,6 +202,7 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
     let heuristic = match term.name.as_str() {
         "blind" => HeuristicConfig::Blind,
         "hmax" => HeuristicConfig::HMax,
+        "lmcut" => HeuristicConfig::LmCut,
         name if PLANNED_HEURISTICS.contains(&name) => {
             return Err(ConfigError::NotYetSupported {
                 name: name.to_string(),
@@ -498,10 +504,6 @@ mod tests {
     #[test]
     fn planned_heuristics_are_not_yet_supported() {
         assert_eq!(
-            err("astar(lmcut())"),
-            "heuristic `lmcut` is not yet supported by demoplan"
-        );
-        assert_eq!(
             err("astar(ipdb(max_time=infinity, pdb_max_size=2000000))"),
             "heuristic `ipdb` is not yet supported by demoplan"
         );
@@ -584,12 +586,12 @@ mod tests {
 
     #[test]
     fn the_full_message_lists_known_names() {
-        let e = parse_search("astar(lmcut())").unwrap_err();
+        let e = parse_search("astar(ipdb())").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "heuristic `lmcut` is not yet supported by demoplan\n\
+            "heuristic `ipdb` is not yet supported by demoplan\n\
              known search engines: astar\n\
-             known heuristics: blind, hmax (planned: lmcut, ipdb, cpdbs)"
+             known heuristics: blind, hmax, lmcut (planned: ipdb, cpdbs)"
         );
     }
 

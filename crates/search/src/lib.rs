@@ -56,8 +56,10 @@ mod astar;
 mod config;
 mod heuristic;
 mod hmax;
+mod lmcut;
 mod open_list;
 mod plan;
+mod radix_heap;
 pub mod state;
 mod successor;
 
@@ -68,6 +70,7 @@ pub use config::{
 };
 pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
+pub use lmcut::LmCut;
 pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;

@@ -6,7 +6,10 @@
 use std::collections::{BinaryHeap, HashMap};
 
 use proptest::prelude::*;
-use search::{astar, replay, Blind, HMax, Heuristic, Outcome, SearchLimits, SearchResult};
+
+mod common;
+use common::reference_lmcut;
+use search::{astar, replay, Blind, HMax, Heuristic, LmCut, Outcome, SearchLimits, SearchResult};
 use task::{Fact, OpId, Operator, Task, VarId, Variable};
 
 /// A partial assignment over variables of these domain sizes.
@@ -320,6 +323,9 @@ proptest! {
 
         let hmax = run(&task, &mut HMax::new(&task).unwrap());
         let blind = run(&task, &mut Blind::new(&task));
+        let lmcut = run(&task, &mut LmCut::new(&task).unwrap());
+        prop_assert_eq!(cost(&lmcut), optimal);
+        check_plan(&task, &lmcut);
         prop_assert_eq!(cost(&hmax), optimal);
         prop_assert_eq!(cost(&blind), optimal);
         check_plan(&task, &hmax);
@@ -357,6 +363,27 @@ proptest! {
         // The goal is free wherever it holds.
         for state in space.states.iter().filter(|s| task.is_goal(s)) {
             prop_assert_eq!(hmax.evaluate(state), Some(0));
+        }
+    }
+
+    #[test]
+    fn lmcut_is_admissible_dominates_hmax_and_equals_the_reference(task in tasks()) {
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        let mut lmcut = LmCut::new(&task).unwrap();
+        let mut hmax = HMax::new(&task).unwrap();
+        for (s, state) in space.states.iter().enumerate() {
+            let h = lmcut.evaluate(state);
+            prop_assert_eq!(h, reference_lmcut(&task, state), "in {:?}", state);
+            prop_assert_eq!(h.is_none(), hmax.evaluate(state).is_none());
+            if let (Some(h), Some(m)) = (h, hmax.evaluate(state)) {
+                prop_assert!(h >= m, "lmcut {} < hmax {} in {:?}", h, m, state);
+            }
+            match (h, h_star[s]) {
+                (Some(h), Some(exact)) => prop_assert!(h <= exact, "h = {} > h* = {} in {:?}", h, exact, state),
+                (None, Some(exact)) => prop_assert!(false, "dead end claimed in {:?} with h* = {}", state, exact),
+                (_, None) => {}
+            }
         }
     }
 

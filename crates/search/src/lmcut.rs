@@ -4,13 +4,18 @@
 //! operator whose preconditions are the goal) and an artificial fact `I` true in every
 //! state (the precondition of operators that have none), LM-cut repeats:
 //!
-//! 1. h^max of every fact, and for every operator its *supporter*: the precondition of
-//!    highest h^max (ties: lowest fact index). If `h^max(G) = 0`, stop.
+//! 1. h^max of every fact, and for every operator its *supporter*: a precondition of
+//!    highest h^max. Ties matter for the quality of the cuts: the first round takes the
+//!    first such precondition in the operator's order; later rounds keep the supporter
+//!    of the round before while it is still of highest cost. If `h^max(G) = 0`, stop.
 //! 2. The *goal zone*: the facts from which `G` is reached through zero-cost operators,
-//!    following supporters backwards.
+//!    following supporters backwards. When a zero-cost operator has several preconditions
+//!    of highest cost, its supporter becomes the first that no zero-cost operator achieves
+//!    or that is already in the zone (as Fast Downward's goal-zone and border detection
+//!    do), which keeps the zone, and the cuts, small.
 //! 3. The *cut*: the operators whose supporter is reached from the state without entering
-//!    the goal zone (following supporters forwards) and that have an effect in the goal
-//!    zone. It is a disjunctive action landmark; its cheapest cost `m` is added to `h` and
+//!    the goal zone (following supporters forwards; the other effects of an operator that
+//!    enters the goal zone are not reached) and that have an effect in the goal zone. It is a disjunctive action landmark; its cheapest cost `m` is added to `h` and
 //!    subtracted from the cost of every operator in it.
 //!
 //! The sum is admissible (the cuts are landmarks with costs partitioned among them), not
@@ -57,9 +62,14 @@ pub struct LmCut {
     goal_zone: Vec<u32>,
     reached: Vec<u32>,
     in_cut: Vec<u32>,
+    /// The round in which an operator's supporter was last updated, and its supporter at
+    /// the start of that round's update.
+    updated_in_round: Vec<u32>,
+    round_supporter: Vec<u32>,
     round: u32,
     heap: RadixHeap,
     stack: Vec<u32>,
+    frames: Vec<(u32, u32)>,
     cut: Vec<u32>,
 }
 
@@ -153,9 +163,12 @@ impl LmCut {
             goal_zone: vec![0; facts],
             reached: vec![0; facts],
             in_cut: vec![0; ops],
+            updated_in_round: vec![0; ops],
+            round_supporter: vec![0; ops],
             round: 0,
             heap: RadixHeap::new(),
             stack: Vec::new(),
+            frames: Vec::new(),
             cut: Vec::new(),
         })
     }
@@ -170,19 +183,47 @@ impl LmCut {
         self.eff_start[op] as usize..self.eff_start[op + 1] as usize
     }
 
-    /// The precondition of highest cost, lowest index on ties.
+    /// The first precondition (in the operator's order) of highest cost.
     #[inline]
     fn best_supporter(&self, op: usize) -> u32 {
         let mut best = u32::MAX;
         let mut best_cost = 0;
         for &p in &self.pre[self.pres(op)] {
             let c = self.cost[p as usize];
-            if best == u32::MAX || c > best_cost || (c == best_cost && p < best) {
+            if best == u32::MAX || c > best_cost {
                 best = p;
                 best_cost = c;
             }
         }
         best
+    }
+
+    /// After the supporter of `op` got cheaper: the supporter the operator had when this
+    /// round's update began stays while it is of highest cost, otherwise the first
+    /// precondition of highest cost takes over. Remembering the round's starting supporter
+    /// makes the result depend only on the updated costs, not on the order in which the
+    /// update visits the preconditions.
+    #[inline]
+    fn updated_supporter(&mut self, op: usize) -> u32 {
+        if self.updated_in_round[op] != self.round {
+            self.updated_in_round[op] = self.round;
+            self.round_supporter[op] = self.supporter[op];
+        }
+        let pres = self.pres(op);
+        let max = self.pre[pres.clone()]
+            .iter()
+            .map(|&p| self.cost[p as usize])
+            .max()
+            .unwrap_or(0);
+        let previous = self.round_supporter[op];
+        if self.cost[previous as usize] == max {
+            return previous;
+        }
+        self.pre[pres]
+            .iter()
+            .copied()
+            .find(|&p| self.cost[p as usize] == max)
+            .unwrap_or(previous)
     }
 
     /// Relaxes the effects of `op` with value `value`.
@@ -253,7 +294,7 @@ impl LmCut {
                 let o = self.pre_of[i] as usize;
                 // Only an operator whose most expensive precondition got cheaper changes.
                 if self.unsatisfied[o] == 0 && self.supporter[o] == f {
-                    let s = self.best_supporter(o);
+                    let s = self.updated_supporter(o);
                     self.supporter[o] = s;
                     let value = self.op_cost[o] + self.cost[s as usize];
                     self.relax_effects(o, value);
@@ -262,24 +303,59 @@ impl LmCut {
         }
     }
 
-    /// Marks the goal zone with the current round.
+    /// True if no operator of cost 0 (in this round) achieves `fact`.
+    #[inline]
+    fn has_no_zero_cost_achiever(&self, fact: u32) -> bool {
+        let (start, end) = (
+            self.ach_start[fact as usize] as usize,
+            self.ach_start[fact as usize + 1] as usize,
+        );
+        self.ach[start..end]
+            .iter()
+            .all(|&o| self.op_cost[o as usize] != 0)
+    }
+
+    /// Among the preconditions of a zero-cost operator that tie with its supporter, prefers
+    /// the first that no zero-cost operator achieves (the border of the goal zone) or that
+    /// is already in the goal zone: the zone then grows less through zero-cost chains, and
+    /// the cuts stay small.
+    fn break_supporter_ties(&mut self, op: usize) {
+        let target = self.cost[self.supporter[op] as usize];
+        for i in self.pres(op) {
+            let p = self.pre[i];
+            if self.cost[p as usize] != target {
+                continue;
+            }
+            if self.has_no_zero_cost_achiever(p) || self.goal_zone[p as usize] == self.round {
+                self.supporter[op] = p;
+                return;
+            }
+        }
+    }
+
+    /// Marks the goal zone with the current round: depth first from the goal fact through
+    /// the supporters of zero-cost achievers, with an explicit stack of (fact, next
+    /// achiever) frames so deep zones cannot overflow the call stack.
     fn mark_goal_zone(&mut self) {
-        self.stack.clear();
+        self.frames.clear();
         self.goal_zone[self.fact_g as usize] = self.round;
-        self.stack.push(self.fact_g);
-        while let Some(f) = self.stack.pop() {
-            let (start, end) = (
-                self.ach_start[f as usize] as usize,
-                self.ach_start[f as usize + 1] as usize,
-            );
-            for i in start..end {
-                let o = self.ach[i] as usize;
-                if self.op_cost[o] == 0 && self.unsatisfied[o] == 0 {
-                    let s = self.supporter[o];
-                    if self.goal_zone[s as usize] != self.round {
-                        self.goal_zone[s as usize] = self.round;
-                        self.stack.push(s);
-                    }
+        self.frames
+            .push((self.fact_g, self.ach_start[self.fact_g as usize]));
+        while let Some(&(f, cursor)) = self.frames.last() {
+            if cursor == self.ach_start[f as usize + 1] {
+                self.frames.pop();
+                continue;
+            }
+            if let Some(top) = self.frames.last_mut() {
+                top.1 += 1;
+            }
+            let o = self.ach[cursor as usize] as usize;
+            if self.op_cost[o] == 0 && self.unsatisfied[o] == 0 {
+                self.break_supporter_ties(o);
+                let s = self.supporter[o];
+                if self.goal_zone[s as usize] != self.round {
+                    self.goal_zone[s as usize] = self.round;
+                    self.frames.push((s, self.ach_start[s as usize]));
                 }
             }
         }
@@ -306,14 +382,20 @@ impl LmCut {
                 if self.unsatisfied[o] != 0 || self.supporter[o] != f {
                     continue;
                 }
+                let enters_goal_zone = self
+                    .effs(o)
+                    .any(|k| self.goal_zone[self.eff[k] as usize] == self.round);
+                if enters_goal_zone {
+                    // A cut operator; its other effects lie beyond the cut.
+                    if self.in_cut[o] != self.round {
+                        self.in_cut[o] = self.round;
+                        self.cut.push(o as u32);
+                    }
+                    continue;
+                }
                 for k in self.effs(o) {
                     let e = self.eff[k];
-                    if self.goal_zone[e as usize] == self.round {
-                        if self.in_cut[o] != self.round {
-                            self.in_cut[o] = self.round;
-                            self.cut.push(o as u32);
-                        }
-                    } else if self.reached[e as usize] != self.round {
+                    if self.reached[e as usize] != self.round {
                         self.reached[e as usize] = self.round;
                         self.stack.push(e);
                     }
@@ -328,6 +410,7 @@ impl LmCut {
             self.goal_zone.fill(0);
             self.reached.fill(0);
             self.in_cut.fill(0);
+            self.updated_in_round.fill(0);
             self.round = 0;
         }
         self.round += 1;

@@ -2,10 +2,16 @@
 
 use task::{Fact, Task};
 
-/// LM-cut as the paper defines it, recomputing everything from scratch each round with
-/// plain fixpoint iterations: slow and obviously correct. Facts are numbered as in
-/// `LmCut` (variable offsets, then the always-true fact, then the goal fact); supporters
-/// are the precondition of highest h^max, lowest index on ties.
+/// LM-cut, recomputing h^max from scratch each round with plain fixpoint iterations:
+/// slow and obviously correct. Facts are numbered as in `LmCut` (variable offsets, then the
+/// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
+/// stated here as plainly as possible:
+/// - round 1: the first precondition (in the operator's order) of highest h^max;
+/// - later rounds: the supporter of the round before while it still has the highest
+///   h^max, else the first precondition of highest h^max;
+/// - while the goal zone is marked (depth first from the goal fact, achievers in operator
+///   order), a zero-cost operator's supporter becomes the first precondition tying with it
+///   that has no zero-cost achiever or is already in the zone.
 pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
     const INF: u64 = u64::MAX;
     let mut offset = Vec::new();
@@ -37,6 +43,7 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         in_state[offset[var] + value as usize] = true;
     }
     in_state[fact_i] = true;
+    let mut supporter: Vec<Option<usize>> = vec![None; ops.len()];
     let mut h = 0;
     loop {
         let mut hm: Vec<u64> = in_state.iter().map(|&t| if t { 0 } else { INF }).collect();
@@ -63,35 +70,28 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         if hm[fact_g] == 0 {
             return Some(h);
         }
-        let applicable = |pre: &Vec<usize>| pre.iter().all(|&p| hm[p] != INF);
-        let supporter = |pre: &Vec<usize>| {
-            let best = pre.iter().map(|&p| hm[p]).max().unwrap();
-            *pre.iter().filter(|&&p| hm[p] == best).min().unwrap()
-        };
-        let mut zone = vec![false; n + 2];
-        zone[fact_g] = true;
-        loop {
-            let mut changed = false;
-            for (pre, eff, c) in &ops {
-                if *c == 0 && applicable(pre) && eff.iter().any(|&e| zone[e]) {
-                    let s = supporter(pre);
-                    if !zone[s] {
-                        zone[s] = true;
-                        changed = true;
-                    }
-                }
+        for (o, (pre, _, _)) in ops.iter().enumerate() {
+            if pre.iter().any(|&p| hm[p] == INF) {
+                continue;
             }
-            if !changed {
-                break;
+            let best = pre.iter().map(|&p| hm[p]).max().unwrap();
+            let keep = supporter[o].is_some_and(|s| hm[s] == best);
+            if !keep {
+                supporter[o] = pre.iter().copied().find(|&p| hm[p] == best);
             }
         }
+        let mut zone = vec![false; n + 2];
+        mark_zone(fact_g, &ops, &hm, &mut supporter, &mut zone);
+        let enters_zone = |eff: &Vec<usize>, zone: &[bool]| eff.iter().any(|&e| zone[e]);
         let mut reached = in_state.clone();
         loop {
             let mut changed = false;
-            for (pre, eff, _) in &ops {
-                if applicable(pre) && reached[supporter(pre)] {
+            for (o, (_, eff, _)) in ops.iter().enumerate() {
+                // An operator entering the goal zone is in the cut; its other effects are
+                // beyond the cut and not reached.
+                if supporter[o].is_some_and(|s| reached[s]) && !enters_zone(eff, &zone) {
                     for &e in eff {
-                        if !zone[e] && !reached[e] {
+                        if !reached[e] {
                             reached[e] = true;
                             changed = true;
                         }
@@ -103,10 +103,7 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
             }
         }
         let cut: Vec<usize> = (0..ops.len())
-            .filter(|&o| {
-                let (pre, eff, _) = &ops[o];
-                applicable(pre) && reached[supporter(pre)] && eff.iter().any(|&e| zone[e])
-            })
+            .filter(|&o| supporter[o].is_some_and(|s| reached[s]) && enters_zone(&ops[o].1, &zone))
             .collect();
         let m = cut.iter().map(|&o| ops[o].2).min().unwrap();
         assert!(m > 0, "a cut of zero cost");
@@ -114,5 +111,41 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         for &o in &cut {
             ops[o].2 -= m;
         }
+    }
+}
+
+/// Marks the goal zone depth first from `fact`, breaking supporter ties of zero-cost
+/// achievers on the way.
+fn mark_zone(
+    fact: usize,
+    ops: &[(Vec<usize>, Vec<usize>, u64)],
+    hm: &[u64],
+    supporter: &mut [Option<usize>],
+    zone: &mut [bool],
+) {
+    if zone[fact] {
+        return;
+    }
+    zone[fact] = true;
+    for o in 0..ops.len() {
+        let (pre, eff, cost) = &ops[o];
+        if *cost != 0 || !eff.contains(&fact) {
+            continue;
+        }
+        let Some(current) = supporter[o] else {
+            continue;
+        };
+        let target = hm[current];
+        let no_zero_cost_achiever =
+            |p: usize| !ops.iter().any(|(_, e, c)| *c == 0 && e.contains(&p));
+        if let Some(p) = pre
+            .iter()
+            .copied()
+            .find(|&p| hm[p] == target && (no_zero_cost_achiever(p) || zone[p]))
+        {
+            supporter[o] = Some(p);
+        }
+        let s = supporter[o].unwrap_or(current);
+        mark_zone(s, ops, hm, supporter, zone);
     }
 }

@@ -33,6 +33,51 @@ use crate::heuristic::Heuristic;
 use crate::radix_heap::RadixHeap;
 
 const INFINITE: u64 = u64::MAX;
+/// The end of an intrusive list.
+const NONE: u32 = u32::MAX;
+
+/// An operator of the relaxed task: static data and per-evaluation state side by side, so
+/// that the inner loops touch one cache line per operator.
+#[derive(Debug, Clone, Copy, Default)]
+struct RelaxedOp {
+    /// Cost in the current round (the base cost minus the cuts it was in).
+    cost: u64,
+    base_cost: u64,
+    /// A precondition of highest h^max, once all preconditions are reached.
+    supporter: u32,
+    /// Neighbours in the list of operators with the same supporter ([`NONE`] at the ends).
+    supported_prev: u32,
+    supported_next: u32,
+    /// Preconditions not yet reached in the first exploration.
+    unsatisfied: u32,
+    /// Preconditions: `pre[pre_start..pre_start + num_pre]` (never empty).
+    pre_start: u32,
+    num_pre: u32,
+    /// Effects: `eff[eff_start..eff_end]`.
+    eff_start: u32,
+    eff_end: u32,
+    /// The round in which it was last put in a cut.
+    in_cut: u32,
+    /// The round in which its supporter was last updated, and its supporter when that
+    /// round's update began.
+    updated_in_round: u32,
+    round_supporter: u32,
+}
+
+/// A fact of the relaxed task.
+#[derive(Debug, Clone, Copy)]
+struct RelaxedFact {
+    /// h^max.
+    cost: u64,
+    /// The round in which it was last marked in the goal zone.
+    goal_zone: u32,
+    /// The round in which it was last reached by the cut search.
+    reached: u32,
+    /// First of the operators this fact supports (a doubly linked list through
+    /// `RelaxedOp::supported_next`), so the explorations visit only those operators
+    /// instead of every operator the fact is a precondition of.
+    supported: u32,
+}
 
 /// The LM-cut heuristic; see the module documentation.
 #[derive(Debug, Clone)]
@@ -42,30 +87,17 @@ pub struct LmCut {
     fact_i: u32,
     /// Index of the artificial goal fact.
     fact_g: u32,
-    /// Operator `o`'s preconditions: `pre[pre_start[o]..pre_start[o + 1]]` (never empty).
-    pre_start: Vec<u32>,
+    ops: Vec<RelaxedOp>,
+    facts: Vec<RelaxedFact>,
     pre: Vec<u32>,
-    eff_start: Vec<u32>,
     eff: Vec<u32>,
-    base_cost: Vec<u64>,
-    /// Operators with fact `f` as a precondition.
+    /// Operators with fact `f` as a precondition: `pre_of[pre_of_start[f]..pre_of_start[f + 1]]`.
     pre_of_start: Vec<u32>,
     pre_of: Vec<u32>,
-    /// Operators with fact `f` as an effect.
+    /// Operators with fact `f` as an effect, likewise.
     ach_start: Vec<u32>,
     ach: Vec<u32>,
     // Scratch, reused across evaluations.
-    cost: Vec<u64>,
-    op_cost: Vec<u64>,
-    supporter: Vec<u32>,
-    unsatisfied: Vec<u32>,
-    goal_zone: Vec<u32>,
-    reached: Vec<u32>,
-    in_cut: Vec<u32>,
-    /// The round in which an operator's supporter was last updated, and its supporter at
-    /// the start of that round's update.
-    updated_in_round: Vec<u32>,
-    round_supporter: Vec<u32>,
     round: u32,
     heap: RadixHeap,
     stack: Vec<u32>,
@@ -73,7 +105,7 @@ pub struct LmCut {
     cut: Vec<u32>,
 }
 
-/// `index[start[i]..start[i+1]]` lists, by counting sort of `(key, value)` pairs.
+/// `values[start[k]..start[k + 1]]` lists, by counting sort of `(key, value)` pairs.
 fn group_by(keys: usize, pairs: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
     let mut start = vec![0u32; keys + 1];
     for &(k, _) in pairs {
@@ -91,6 +123,68 @@ fn group_by(keys: usize, pairs: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
     (start, values)
 }
 
+/// The first fact of `pres` whose h^max equals `cost`.
+#[inline]
+fn first_with_cost(pres: &[u32], facts: &[RelaxedFact], cost: u64) -> Option<u32> {
+    pres.iter()
+        .copied()
+        .find(|&p| facts[p as usize].cost == cost)
+}
+
+/// Makes `fact` the supporter of operator `o`, at the head of `fact`'s list.
+#[inline]
+fn link(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
+    let head = facts[fact as usize].supported;
+    if head != NONE {
+        ops[head as usize].supported_prev = o;
+    }
+    let op = &mut ops[o as usize];
+    op.supporter = fact;
+    op.supported_prev = NONE;
+    op.supported_next = head;
+    facts[fact as usize].supported = o;
+}
+
+/// Takes operator `o` out of its supporter's list.
+#[inline]
+fn unlink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32) {
+    let RelaxedOp {
+        supporter,
+        supported_prev: prev,
+        supported_next: next,
+        ..
+    } = ops[o as usize];
+    if prev == NONE {
+        facts[supporter as usize].supported = next;
+    } else {
+        ops[prev as usize].supported_next = next;
+    }
+    if next != NONE {
+        ops[next as usize].supported_prev = prev;
+    }
+}
+
+/// Changes the supporter of operator `o` to `fact`.
+#[inline]
+fn relink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
+    if ops[o as usize].supporter != fact {
+        unlink(ops, facts, o);
+        link(ops, facts, o, fact);
+    }
+}
+
+/// Lowers the h^max of the effects to `value` where that is cheaper, queueing them.
+#[inline]
+fn relax_effects(effects: &[u32], value: u64, facts: &mut [RelaxedFact], heap: &mut RadixHeap) {
+    for &e in effects {
+        let fact = &mut facts[e as usize];
+        if value < fact.cost {
+            fact.cost = value;
+            heap.push(value, e);
+        }
+    }
+}
+
 impl LmCut {
     /// LM-cut for `task` (costs as [`Task::cost`] gives them); fails if the task is not
     /// valid. O(size of the task).
@@ -104,67 +198,66 @@ impl LmCut {
         }
         let fact_i = num_facts;
         let fact_g = num_facts + 1;
-        let facts = num_facts as usize + 2;
+        let num_facts = num_facts as usize + 2;
         let fact = |f: &task::Fact| fact_offset[f.var.index()] + f.value;
-        let mut pre_start = vec![0u32];
+        let mut ops = Vec::with_capacity(task.operators.len() + 1);
         let mut pre = Vec::new();
-        let mut eff_start = vec![0u32];
         let mut eff = Vec::new();
-        let mut base_cost = Vec::new();
+        let mut add = |pres: Vec<u32>, effs: Vec<u32>, cost: u64| {
+            let pres = if pres.is_empty() { vec![fact_i] } else { pres };
+            ops.push(RelaxedOp {
+                base_cost: cost,
+                pre_start: pre.len() as u32,
+                num_pre: pres.len() as u32,
+                eff_start: eff.len() as u32,
+                eff_end: (eff.len() + effs.len()) as u32,
+                ..RelaxedOp::default()
+            });
+            pre.extend(pres);
+            eff.extend(effs);
+        };
         for op in &task.operators {
-            if op.preconditions.is_empty() {
-                pre.push(fact_i);
-            }
-            pre.extend(op.preconditions.iter().map(fact));
-            pre_start.push(pre.len() as u32);
-            eff.extend(op.effects.iter().map(fact));
-            eff_start.push(eff.len() as u32);
-            base_cost.push(task.cost(op));
+            add(
+                op.preconditions.iter().map(fact).collect(),
+                op.effects.iter().map(fact).collect(),
+                task.cost(op),
+            );
         }
         // The goal operator, last.
-        if task.goal.is_empty() {
-            pre.push(fact_i);
-        }
-        pre.extend(task.goal.iter().map(fact));
-        pre_start.push(pre.len() as u32);
-        eff.push(fact_g);
-        eff_start.push(eff.len() as u32);
-        base_cost.push(0);
-        let ops = base_cost.len();
+        add(task.goal.iter().map(fact).collect(), vec![fact_g], 0);
         let mut pre_pairs = Vec::with_capacity(pre.len());
         let mut eff_pairs = Vec::with_capacity(eff.len());
-        for o in 0..ops {
-            for &f in &pre[pre_start[o] as usize..pre_start[o + 1] as usize] {
+        for (o, op) in ops.iter().enumerate() {
+            let start = op.pre_start as usize;
+            for &f in &pre[start..start + op.num_pre as usize] {
                 pre_pairs.push((f, o as u32));
             }
-            for &f in &eff[eff_start[o] as usize..eff_start[o + 1] as usize] {
+            for &f in &eff[op.eff_start as usize..op.eff_end as usize] {
                 eff_pairs.push((f, o as u32));
             }
         }
-        let (pre_of_start, pre_of) = group_by(facts, &pre_pairs);
-        let (ach_start, ach) = group_by(facts, &eff_pairs);
+        let (pre_of_start, pre_of) = group_by(num_facts, &pre_pairs);
+        let (ach_start, ach) = group_by(num_facts, &eff_pairs);
         Ok(LmCut {
             fact_offset,
             fact_i,
             fact_g,
-            pre_start,
+            ops,
+            facts: vec![
+                RelaxedFact {
+                    cost: INFINITE,
+                    goal_zone: 0,
+                    reached: 0,
+                    supported: NONE
+                };
+                num_facts
+            ],
             pre,
-            eff_start,
             eff,
-            base_cost,
             pre_of_start,
             pre_of,
             ach_start,
             ach,
-            cost: vec![INFINITE; facts],
-            op_cost: vec![0; ops],
-            supporter: vec![0; ops],
-            unsatisfied: vec![0; ops],
-            goal_zone: vec![0; facts],
-            reached: vec![0; facts],
-            in_cut: vec![0; ops],
-            updated_in_round: vec![0; ops],
-            round_supporter: vec![0; ops],
             round: 0,
             heap: RadixHeap::new(),
             stack: Vec::new(),
@@ -173,132 +266,127 @@ impl LmCut {
         })
     }
 
-    #[inline]
-    fn pres(&self, op: usize) -> std::ops::Range<usize> {
-        self.pre_start[op] as usize..self.pre_start[op + 1] as usize
-    }
-
-    #[inline]
-    fn effs(&self, op: usize) -> std::ops::Range<usize> {
-        self.eff_start[op] as usize..self.eff_start[op + 1] as usize
-    }
-
-    /// The first precondition (in the operator's order) of highest cost.
-    #[inline]
-    fn best_supporter(&self, op: usize) -> u32 {
-        let mut best = u32::MAX;
-        let mut best_cost = 0;
-        for &p in &self.pre[self.pres(op)] {
-            let c = self.cost[p as usize];
-            if best == u32::MAX || c > best_cost {
-                best = p;
-                best_cost = c;
-            }
-        }
-        best
-    }
-
-    /// After the supporter of `op` got cheaper: the supporter the operator had when this
-    /// round's update began stays while it is of highest cost, otherwise the first
-    /// precondition of highest cost takes over. Remembering the round's starting supporter
-    /// makes the result depend only on the updated costs, not on the order in which the
-    /// update visits the preconditions.
-    #[inline]
-    fn updated_supporter(&mut self, op: usize) -> u32 {
-        if self.updated_in_round[op] != self.round {
-            self.updated_in_round[op] = self.round;
-            self.round_supporter[op] = self.supporter[op];
-        }
-        let pres = self.pres(op);
-        let max = self.pre[pres.clone()]
-            .iter()
-            .map(|&p| self.cost[p as usize])
-            .max()
-            .unwrap_or(0);
-        let previous = self.round_supporter[op];
-        if self.cost[previous as usize] == max {
-            return previous;
-        }
-        self.pre[pres]
-            .iter()
-            .copied()
-            .find(|&p| self.cost[p as usize] == max)
-            .unwrap_or(previous)
-    }
-
-    /// Relaxes the effects of `op` with value `value`.
-    #[inline]
-    fn relax_effects(&mut self, op: usize, value: u64) {
-        for i in self.effs(op) {
-            let e = self.eff[i] as usize;
-            if value < self.cost[e] {
-                self.cost[e] = value;
-                self.heap.push(value, e as u32);
-            }
-        }
-    }
-
-    /// h^max from scratch, with supporters.
+    /// h^max from scratch, with supporters: the first precondition (in the operator's
+    /// order) of highest cost.
     fn first_exploration(&mut self, state: &[u32]) {
-        self.cost.fill(INFINITE);
-        self.heap.clear();
-        for o in 0..self.op_cost.len() {
-            self.op_cost[o] = self.base_cost[o];
-            self.unsatisfied[o] = self.pre_start[o + 1] - self.pre_start[o];
+        let LmCut {
+            ops,
+            facts,
+            pre,
+            eff,
+            pre_of_start,
+            pre_of,
+            heap,
+            ..
+        } = self;
+        for f in facts.iter_mut() {
+            f.cost = INFINITE;
+            f.supported = NONE;
         }
+        for op in ops.iter_mut() {
+            op.cost = op.base_cost;
+            op.unsatisfied = op.num_pre;
+        }
+        heap.clear();
         for (var, &value) in state.iter().enumerate() {
-            let f = (self.fact_offset[var] + value) as usize;
-            self.cost[f] = 0;
-            self.heap.push(0, f as u32);
+            let f = self.fact_offset[var] + value;
+            facts[f as usize].cost = 0;
+            heap.push(0, f);
         }
-        self.cost[self.fact_i as usize] = 0;
-        self.heap.push(0, self.fact_i);
-        while let Some((c, f)) = self.heap.pop() {
-            if c > self.cost[f as usize] {
+        facts[self.fact_i as usize].cost = 0;
+        heap.push(0, self.fact_i);
+        while let Some((c, f)) = heap.pop() {
+            if c > facts[f as usize].cost {
                 continue;
             }
-            let (start, end) = (
-                self.pre_of_start[f as usize] as usize,
-                self.pre_of_start[f as usize + 1] as usize,
-            );
-            for i in start..end {
-                let o = self.pre_of[i] as usize;
-                self.unsatisfied[o] -= 1;
-                if self.unsatisfied[o] == 0 {
-                    let s = self.best_supporter(o);
-                    self.supporter[o] = s;
-                    let value = self.op_cost[o] + self.cost[s as usize];
-                    self.relax_effects(o, value);
+            for &o in
+                &pre_of[pre_of_start[f as usize] as usize..pre_of_start[f as usize + 1] as usize]
+            {
+                let op = &mut ops[o as usize];
+                op.unsatisfied -= 1;
+                if op.unsatisfied == 0 {
+                    // Every precondition is reached at a cost of at most `c`, `f` at `c`.
+                    let op = *op;
+                    let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
+                    let supporter = if op.num_pre == 1 {
+                        f
+                    } else {
+                        first_with_cost(pres, facts, c).unwrap_or(f)
+                    };
+                    link(ops, facts, o, supporter);
+                    relax_effects(
+                        &eff[op.eff_start as usize..op.eff_end as usize],
+                        op.cost + c,
+                        facts,
+                        heap,
+                    );
                 }
             }
         }
     }
 
     /// Updates h^max after the operators of the cut got cheaper: costs only decrease.
+    ///
+    /// An operator whose supporter got cheaper gets a new supporter: the one it had when
+    /// this round's update began while that is of highest cost, otherwise the first
+    /// precondition of highest cost. Remembering the round's starting supporter makes the
+    /// result depend only on the updated costs, not on the order of the update.
     fn second_exploration(&mut self) {
-        self.heap.clear();
-        for k in 0..self.cut.len() {
-            let o = self.cut[k] as usize;
-            let value = self.op_cost[o] + self.cost[self.supporter[o] as usize];
-            self.relax_effects(o, value);
+        let round = self.round;
+        let LmCut {
+            ops,
+            facts,
+            pre,
+            eff,
+            heap,
+            cut,
+            ..
+        } = self;
+        heap.clear();
+        for &o in cut.iter() {
+            let op = &ops[o as usize];
+            let value = op.cost + facts[op.supporter as usize].cost;
+            relax_effects(
+                &eff[op.eff_start as usize..op.eff_end as usize],
+                value,
+                facts,
+                heap,
+            );
         }
-        while let Some((c, f)) = self.heap.pop() {
-            if c > self.cost[f as usize] {
+        while let Some((c, f)) = heap.pop() {
+            if c > facts[f as usize].cost {
                 continue;
             }
-            let (start, end) = (
-                self.pre_of_start[f as usize] as usize,
-                self.pre_of_start[f as usize + 1] as usize,
-            );
-            for i in start..end {
-                let o = self.pre_of[i] as usize;
-                // Only an operator whose most expensive precondition got cheaper changes.
-                if self.unsatisfied[o] == 0 && self.supporter[o] == f {
-                    let s = self.updated_supporter(o);
-                    self.supporter[o] = s;
-                    let value = self.op_cost[o] + self.cost[s as usize];
-                    self.relax_effects(o, value);
+            // Only an operator whose most expensive precondition got cheaper changes.
+            let mut next = facts[f as usize].supported;
+            while next != NONE {
+                let o = next;
+                next = ops[o as usize].supported_next;
+                let op = &mut ops[o as usize];
+                if op.updated_in_round != round {
+                    op.updated_in_round = round;
+                    op.round_supporter = op.supporter;
                 }
+                let op = *op;
+                let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
+                let max = pres
+                    .iter()
+                    .map(|&p| facts[p as usize].cost)
+                    .max()
+                    .unwrap_or(c);
+                let previous = op.round_supporter;
+                let supporter = if facts[previous as usize].cost == max {
+                    previous
+                } else {
+                    first_with_cost(pres, facts, max).unwrap_or(previous)
+                };
+                relink(ops, facts, o, supporter);
+                relax_effects(
+                    &eff[op.eff_start as usize..op.eff_end as usize],
+                    op.cost + max,
+                    facts,
+                    heap,
+                );
             }
         }
     }
@@ -312,22 +400,24 @@ impl LmCut {
         );
         self.ach[start..end]
             .iter()
-            .all(|&o| self.op_cost[o as usize] != 0)
+            .all(|&o| self.ops[o as usize].cost != 0)
     }
 
     /// Among the preconditions of a zero-cost operator that tie with its supporter, prefers
     /// the first that no zero-cost operator achieves (the border of the goal zone) or that
     /// is already in the goal zone: the zone then grows less through zero-cost chains, and
     /// the cuts stay small.
-    fn break_supporter_ties(&mut self, op: usize) {
-        let target = self.cost[self.supporter[op] as usize];
-        for i in self.pres(op) {
-            let p = self.pre[i];
-            if self.cost[p as usize] != target {
+    fn break_supporter_ties(&mut self, o: usize) {
+        let op = self.ops[o];
+        let target = self.facts[op.supporter as usize].cost;
+        for i in op.pre_start..op.pre_start + op.num_pre {
+            let p = self.pre[i as usize];
+            let fact = self.facts[p as usize];
+            if fact.cost != target {
                 continue;
             }
-            if self.has_no_zero_cost_achiever(p) || self.goal_zone[p as usize] == self.round {
-                self.supporter[op] = p;
+            if fact.goal_zone == self.round || self.has_no_zero_cost_achiever(p) {
+                relink(&mut self.ops, &mut self.facts, o as u32, p);
                 return;
             }
         }
@@ -338,7 +428,7 @@ impl LmCut {
     /// achiever) frames so deep zones cannot overflow the call stack.
     fn mark_goal_zone(&mut self) {
         self.frames.clear();
-        self.goal_zone[self.fact_g as usize] = self.round;
+        self.facts[self.fact_g as usize].goal_zone = self.round;
         self.frames
             .push((self.fact_g, self.ach_start[self.fact_g as usize]));
         while let Some(&(f, cursor)) = self.frames.last() {
@@ -350,11 +440,11 @@ impl LmCut {
                 top.1 += 1;
             }
             let o = self.ach[cursor as usize] as usize;
-            if self.op_cost[o] == 0 && self.unsatisfied[o] == 0 {
+            if self.ops[o].cost == 0 && self.ops[o].unsatisfied == 0 {
                 self.break_supporter_ties(o);
-                let s = self.supporter[o];
-                if self.goal_zone[s as usize] != self.round {
-                    self.goal_zone[s as usize] = self.round;
+                let s = self.ops[o].supporter;
+                if self.facts[s as usize].goal_zone != self.round {
+                    self.facts[s as usize].goal_zone = self.round;
                     self.frames.push((s, self.ach_start[s as usize]));
                 }
             }
@@ -363,41 +453,47 @@ impl LmCut {
 
     /// Collects the cut: from the state, along supporters, up to the goal zone.
     fn find_cut(&mut self, state: &[u32]) {
-        self.cut.clear();
-        self.stack.clear();
+        let round = self.round;
+        let LmCut {
+            ops,
+            facts,
+            eff,
+            stack,
+            cut,
+            ..
+        } = self;
+        cut.clear();
+        stack.clear();
         for (var, &value) in state.iter().enumerate() {
             let f = self.fact_offset[var] + value;
-            self.reached[f as usize] = self.round;
-            self.stack.push(f);
+            facts[f as usize].reached = round;
+            stack.push(f);
         }
-        self.reached[self.fact_i as usize] = self.round;
-        self.stack.push(self.fact_i);
-        while let Some(f) = self.stack.pop() {
-            let (start, end) = (
-                self.pre_of_start[f as usize] as usize,
-                self.pre_of_start[f as usize + 1] as usize,
-            );
-            for i in start..end {
-                let o = self.pre_of[i] as usize;
-                if self.unsatisfied[o] != 0 || self.supporter[o] != f {
-                    continue;
-                }
-                let enters_goal_zone = self
-                    .effs(o)
-                    .any(|k| self.goal_zone[self.eff[k] as usize] == self.round);
-                if enters_goal_zone {
+        facts[self.fact_i as usize].reached = round;
+        stack.push(self.fact_i);
+        while let Some(f) = stack.pop() {
+            let mut next = facts[f as usize].supported;
+            while next != NONE {
+                let o = next;
+                let op = &mut ops[o as usize];
+                next = op.supported_next;
+                let effects = &eff[op.eff_start as usize..op.eff_end as usize];
+                if effects
+                    .iter()
+                    .any(|&e| facts[e as usize].goal_zone == round)
+                {
                     // A cut operator; its other effects lie beyond the cut.
-                    if self.in_cut[o] != self.round {
-                        self.in_cut[o] = self.round;
-                        self.cut.push(o as u32);
+                    if op.in_cut != round {
+                        op.in_cut = round;
+                        cut.push(o);
                     }
                     continue;
                 }
-                for k in self.effs(o) {
-                    let e = self.eff[k];
-                    if self.reached[e as usize] != self.round {
-                        self.reached[e as usize] = self.round;
-                        self.stack.push(e);
+                for &e in effects {
+                    let fact = &mut facts[e as usize];
+                    if fact.reached != round {
+                        fact.reached = round;
+                        stack.push(e);
                     }
                 }
             }
@@ -407,10 +503,14 @@ impl LmCut {
     fn next_round(&mut self) {
         if self.round == u32::MAX {
             // Counters wrap after four billion rounds: start the stamps afresh.
-            self.goal_zone.fill(0);
-            self.reached.fill(0);
-            self.in_cut.fill(0);
-            self.updated_in_round.fill(0);
+            for f in &mut self.facts {
+                f.goal_zone = 0;
+                f.reached = 0;
+            }
+            for op in &mut self.ops {
+                op.in_cut = 0;
+                op.updated_in_round = 0;
+            }
             self.round = 0;
         }
         self.round += 1;
@@ -424,15 +524,16 @@ impl Heuristic for LmCut {
 
     fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
         self.first_exploration(state);
-        if self.cost[self.fact_g as usize] == INFINITE {
+        let goal = self.fact_g as usize;
+        if self.facts[goal].cost == INFINITE {
             return None;
         }
         let mut h: u64 = 0;
-        while self.cost[self.fact_g as usize] != 0 {
+        while self.facts[goal].cost != 0 {
             self.next_round();
             self.mark_goal_zone();
             self.find_cut(state);
-            let Some(m) = self.cut.iter().map(|&o| self.op_cost[o as usize]).min() else {
+            let Some(m) = self.cut.iter().map(|&o| self.ops[o as usize].cost).min() else {
                 // Cannot happen while h^max(G) > 0; stop rather than loop.
                 break;
             };
@@ -440,9 +541,8 @@ impl Heuristic for LmCut {
                 break;
             }
             h = h.saturating_add(m);
-            for k in 0..self.cut.len() {
-                let o = self.cut[k] as usize;
-                self.op_cost[o] -= m;
+            for &o in &self.cut {
+                self.ops[o as usize].cost -= m;
             }
             self.second_exploration();
         }

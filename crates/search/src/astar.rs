@@ -7,6 +7,7 @@ use task::{OpId, Task, TaskError};
 use crate::heuristic::Heuristic;
 use crate::open_list::OpenList;
 use crate::plan::Plan;
+use crate::segmented::SegmentedVec;
 use crate::state::{StateId, StatePacker, StateRegistry};
 use crate::successor::SuccessorGenerator;
 
@@ -171,30 +172,48 @@ impl Operators {
     }
 }
 
-/// Per-state search information, in parallel vectors indexed by [`StateId`].
+/// The search node of one state: 24 bytes.
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    g: u64,
+    /// The cached heuristic value, saturated at `u32::MAX` (a lower value stays
+    /// admissible).
+    h: u32,
+    parent: StateId,
+    creating_op: OpId,
+    status: Status,
+}
+
+/// Per-state search information indexed by [`StateId`], in fixed-size segments so that
+/// growing never copies and never holds twice the memory in use.
 struct StateInfo {
-    g: Vec<u64>,
-    h: Vec<u64>,
-    parent: Vec<StateId>,
-    creating_op: Vec<OpId>,
-    status: Vec<Status>,
+    nodes: SegmentedVec<Node>,
 }
 
 impl StateInfo {
-    fn push(&mut self, g: u64, h: u64, parent: StateId, op: OpId, status: Status) {
-        self.g.push(g);
-        self.h.push(h);
-        self.parent.push(parent);
-        self.creating_op.push(op);
-        self.status.push(status);
+    fn push(&mut self, g: u64, h: u64, parent: StateId, creating_op: OpId, status: Status) {
+        let h = u32::try_from(h).unwrap_or(u32::MAX);
+        self.nodes.push(Node {
+            g,
+            h,
+            parent,
+            creating_op,
+            status,
+        });
+    }
+
+    #[inline]
+    fn node(&self, id: StateId) -> &Node {
+        self.nodes.get(id.index())
+    }
+
+    #[inline]
+    fn node_mut(&mut self, id: StateId) -> &mut Node {
+        self.nodes.get_mut(id.index())
     }
 
     fn memory_bytes(&self) -> usize {
-        self.g.capacity() * 8
-            + self.h.capacity() * 8
-            + self.parent.capacity() * 4
-            + self.creating_op.capacity() * 4
-            + self.status.capacity()
+        self.nodes.memory_bytes()
     }
 
     /// The operators on the path from the initial state to `goal`, in order, following
@@ -204,13 +223,13 @@ impl StateInfo {
         let mut state = goal;
         // Parent links form a tree rooted at the initial state; the bound only guards
         // against a broken invariant turning into an endless loop.
-        for _ in 0..self.g.len() {
-            let op = self.creating_op[state.index()];
-            if op == NO_OP {
+        for _ in 0..self.nodes.len() {
+            let node = self.node(state);
+            if node.creating_op == NO_OP {
                 break;
             }
-            ops.push(op);
-            state = self.parent[state.index()];
+            ops.push(node.creating_op);
+            state = node.parent;
         }
         ops.reverse();
         ops
@@ -227,7 +246,7 @@ impl StateInfo {
 /// state is evaluated once and its value cached.
 ///
 /// Time: O(expansions * (successor generation + branching * (state words + heuristic)));
-/// memory: O(registered states * (state words + 25 bytes)). The result is deterministic:
+/// memory: O(registered states * (8 * state words + 24 bytes + hash table)). The result is deterministic:
 /// the same task and heuristic give the same plan and the same counts.
 ///
 /// Limits are checked every few dozen expansions; `observer` is called at each new,
@@ -246,11 +265,7 @@ pub fn astar<H: Heuristic + ?Sized>(
     let mut generator = SuccessorGenerator::new(task);
     let ops = Operators::new(task, &packer);
     let mut info = StateInfo {
-        g: vec![],
-        h: vec![],
-        parent: vec![],
-        creating_op: vec![],
-        status: vec![],
+        nodes: SegmentedVec::new(),
     };
     let mut open = OpenList::new();
     let mut stats = Statistics::default();
@@ -284,6 +299,7 @@ pub fn astar<H: Heuristic + ?Sized>(
             return finish(Outcome::Unsolvable, stats, &registry);
         }
         Some(h) => {
+            let h = h.min(u64::from(u32::MAX));
             info.push(0, h, init, NO_OP, Status::Open);
             open.push(h, h, init);
         }
@@ -304,8 +320,8 @@ pub fn astar<H: Heuristic + ?Sized>(
         let Some((f, h, id)) = open.pop() else {
             return finish(Outcome::Unsolvable, stats, &registry);
         };
-        let s = id.index();
-        if info.status[s] != Status::Open || info.g[s].saturating_add(h) != f {
+        let node = *info.node(id);
+        if node.status != Status::Open || node.g.saturating_add(h) != f {
             continue; // A stale entry: expanded already, or since reached more cheaply.
         }
         if layer.is_none_or(|l| f > l) {
@@ -322,18 +338,18 @@ pub fn astar<H: Heuristic + ?Sized>(
                 });
             }
         }
-        info.status[s] = Status::Closed;
+        info.node_mut(id).status = Status::Closed;
         stats.expanded += 1;
         parent_packed.copy_from_slice(registry.get(id));
         packer.unpack(&parent_packed, &mut state);
         if task.is_goal(&state) {
             let plan = Plan {
                 operators: info.extract_plan(id),
-                cost: info.g[s],
+                cost: node.g,
             };
             return finish(Outcome::Solved(plan), stats, &registry);
         }
-        let g = info.g[s];
+        let g = node.g;
         generator.applicable(&state, &mut applicable);
         for &op in &applicable {
             stats.generated += 1;
@@ -354,23 +370,25 @@ pub fn astar<H: Heuristic + ?Sized>(
                         info.push(child_g, 0, id, op, Status::DeadEnd);
                     }
                     Some(child_h) => {
+                        // The open list must use the value the node keeps.
+                        let child_h = child_h.min(u64::from(u32::MAX));
                         info.push(child_g, child_h, id, op, Status::Open);
                         open.push(child_g.saturating_add(child_h), child_h, child_id);
                     }
                 }
             } else {
-                let c = child_id.index();
-                if info.status[c] == Status::DeadEnd || child_g >= info.g[c] {
+                let node = info.node_mut(child_id);
+                if node.status == Status::DeadEnd || child_g >= node.g {
                     continue;
                 }
-                if info.status[c] == Status::Closed {
+                if node.status == Status::Closed {
                     stats.reopened += 1;
                 }
-                info.g[c] = child_g;
-                info.parent[c] = id;
-                info.creating_op[c] = op;
-                info.status[c] = Status::Open;
-                let child_h = info.h[c];
+                node.g = child_g;
+                node.parent = id;
+                node.creating_op = op;
+                node.status = Status::Open;
+                let child_h = u64::from(node.h);
                 open.push(child_g.saturating_add(child_h), child_h, child_id);
             }
         }

@@ -13,6 +13,8 @@ use std::hash::Hasher;
 use hashbrown::HashTable;
 use rustc_hash::FxHasher;
 
+use crate::segmented::SegmentedArena;
+
 /// Index of a state in a [`StateRegistry`], in order of registration.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct StateId(pub u32);
@@ -169,7 +171,7 @@ fn hash_words(words: &[u64]) -> u64 {
 #[derive(Debug, Clone)]
 pub struct StateRegistry {
     words: usize,
-    arena: Vec<u64>,
+    arena: SegmentedArena,
     len: u32,
     table: HashTable<StateId>,
 }
@@ -179,7 +181,7 @@ impl StateRegistry {
     pub fn new(words_per_state: usize) -> StateRegistry {
         StateRegistry {
             words: words_per_state,
-            arena: Vec::new(),
+            arena: SegmentedArena::new(words_per_state),
             len: 0,
             table: HashTable::new(),
         }
@@ -198,8 +200,7 @@ impl StateRegistry {
     /// The packed state with this id.
     #[inline]
     pub fn get(&self, id: StateId) -> &[u64] {
-        let start = id.index() * self.words;
-        &self.arena[start..start + self.words]
+        self.arena.get(id.index())
     }
 
     /// The id of `packed`, registering it if it is new; the flag tells whether it was.
@@ -208,12 +209,8 @@ impl StateRegistry {
     pub fn insert(&mut self, packed: &[u64]) -> Option<(StateId, bool)> {
         debug_assert_eq!(packed.len(), self.words);
         let hash = hash_words(packed);
-        let words = self.words;
         let arena = &self.arena;
-        let found = self.table.find(hash, |&id| {
-            let start = id.index() * words;
-            &arena[start..start + words] == packed
-        });
+        let found = self.table.find(hash, |&id| arena.get(id.index()) == packed);
         if let Some(&id) = found {
             return Some((id, false));
         }
@@ -222,29 +219,25 @@ impl StateRegistry {
         }
         let id = StateId(self.len);
         self.len += 1;
-        self.arena.extend_from_slice(packed);
+        self.arena.push(packed);
         let arena = &self.arena;
-        self.table.insert_unique(hash, id, |&other| {
-            let start = other.index() * words;
-            hash_words(&arena[start..start + words])
-        });
+        self.table
+            .insert_unique(hash, id, |&other| hash_words(arena.get(other.index())));
         Some((id, true))
     }
 
     /// The id of `packed` if it is registered.
     pub fn find(&self, packed: &[u64]) -> Option<StateId> {
-        let words = self.words;
         self.table
             .find(hash_words(packed), |&id| {
-                let start = id.index() * words;
-                &self.arena[start..start + words] == packed
+                self.arena.get(id.index()) == packed
             })
             .copied()
     }
 
     /// Bytes held by the arena and the table (capacity, not length).
     pub fn memory_bytes(&self) -> usize {
-        self.arena.capacity() * 8 + self.table.allocation_size()
+        self.arena.memory_bytes() + self.table.allocation_size()
     }
 }
 

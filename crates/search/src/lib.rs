@@ -60,6 +60,7 @@ mod lmcut;
 mod open_list;
 mod plan;
 mod radix_heap;
+mod segmented;
 pub mod state;
 mod successor;
 

@@ -101,4 +101,40 @@ pub enum Command {
         #[arg(value_name = "PLAN", required = true)]
         plans: Vec<PathBuf>,
     },
+    /// Simulate VR demonstrations of people stacking cubes, with ground truth.
+    ///
+    /// Writes one recording per demonstration in demoplan's JSON Lines format (NAME.jsonl),
+    /// its ground truth beside it (NAME.truth.jsonl: phase and the paper's activity per
+    /// frame and hand) and a manifest (simulation.json). The defaults are the paper's study:
+    /// 3 participants times 4 demonstrations, seed 7. Deterministic per seed.
+    Simulate {
+        /// Where to write (created if missing).
+        #[arg(short = 'o', long = "out", value_name = "DIR")]
+        out: PathBuf,
+        /// Number of participants.
+        #[arg(long, value_name = "N", default_value_t = 3)]
+        participants: u32,
+        /// Demonstrations per participant.
+        #[arg(long, value_name = "N", default_value_t = 4)]
+        per_participant: u32,
+        /// Seed of the random numbers.
+        #[arg(long, value_name = "N", default_value_t = 7)]
+        seed: u64,
+        /// Number of cubes on the table (default 6).
+        #[arg(long, value_name = "N")]
+        cubes: Option<u32>,
+        /// Simulator parameters as JSON; fields left out keep their defaults
+        /// (docs/recording-format.md lists them).
+        #[arg(long, value_name = "FILE")]
+        params: Option<PathBuf>,
+    },
+    /// Read recordings to the end and summarise them: duration, frame rate, gaps,
+    /// entities, which fields are present.
+    ///
+    /// A malformed recording is reported with its file, line, column and field (exit 31).
+    Inspect {
+        /// Recordings in demoplan's JSON Lines format.
+        #[arg(value_name = "RECORDING", required = true)]
+        files: Vec<PathBuf>,
+    },
 }

@@ -91,7 +91,7 @@ impl Diagnostic for SourceDiagnostic {
 
 /// Renders without colour unless standard error is a terminal and `NO_COLOR` is unset,
 /// at a fixed width, so that output in files and tests is stable.
-fn render(diagnostic: &dyn Diagnostic) -> String {
+pub(crate) fn render(diagnostic: &dyn Diagnostic) -> String {
     use std::io::IsTerminal;
     let colour = std::io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none();
     let theme = if colour {

@@ -8,6 +8,7 @@ mod exit;
 mod input;
 mod memory;
 mod output;
+mod recording_input;
 
 use std::io::Write;
 
@@ -76,5 +77,21 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             problem,
             plans,
         } => commands::validate::run(&domain, &problem, &plans),
+        cli::Command::Simulate {
+            out,
+            participants,
+            per_participant,
+            seed,
+            cubes,
+            params,
+        } => commands::simulate::run(commands::simulate::SimulateArgs {
+            participants,
+            per_participant,
+            seed,
+            out,
+            params,
+            cubes,
+        }),
+        cli::Command::Inspect { files } => commands::inspect::run(&files),
     }
 }

@@ -677,3 +677,167 @@ fn malformed_output_sas_is_a_search_input_error() {
         transcript(&out)
     );
 }
+
+/// Each file under `fixtures/recordings` is a recording with one mistake, named after it.
+/// `inspect` reports it naming the file, the line and the field, prints no summary, and
+/// exits 31 (input error).
+#[test]
+fn malformed_recordings_name_file_line_and_field() {
+    let dir = fixtures().join("recordings");
+    let mut cases: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    cases.sort();
+    assert!(
+        cases.len() >= 7,
+        "only {} malformed recordings",
+        cases.len()
+    );
+    for case in &cases {
+        let out = demoplan()
+            .current_dir(&dir)
+            .args(["inspect", case])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(31), "{case}: {stderr}");
+        assert!(
+            stderr.contains(&format!("[{case}:")),
+            "{case}: no file:line:col in\n{stderr}"
+        );
+        assert!(
+            stderr.contains("field `") || stderr.contains("the whole line"),
+            "{case}: no field in\n{stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{case}: printed a summary");
+        let name = case.trim_end_matches(".jsonl");
+        insta::assert_snapshot!(format!("recording-{name}"), transcript(&out));
+    }
+}
+
+#[test]
+fn inspect_summarises_the_example_recording() {
+    let out = demoplan()
+        .current_dir(workspace())
+        .args(["inspect", "docs/examples/two-cubes.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+}
+
+#[test]
+fn inspect_of_a_missing_file_is_a_command_line_error() {
+    let out = demoplan()
+        .args(["inspect", "/nonexistent/recording.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+}
+
+/// `simulate` with no options but `-o` writes the embedded default (the paper's 3 x 4
+/// demonstrations, seed 7): the same bytes every time, each recording readable, each with
+/// its ground truth. The snapshot pins the default study: a change to it is deliberate.
+#[test]
+fn simulate_writes_the_default_study_deterministically() {
+    let tmp = tempdir("simulate");
+    let run = |args: &[&str]| {
+        demoplan()
+            .current_dir(&tmp)
+            .arg("simulate")
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let first = run(&["-o", "a"]);
+    assert_eq!(first.status.code(), Some(0), "{}", transcript(&first));
+    let second = run(&[
+        "--participants",
+        "3",
+        "--per-participant",
+        "4",
+        "--seed",
+        "7",
+        "-o",
+        "b",
+    ]);
+    assert_eq!(second.status.code(), Some(0), "{}", transcript(&second));
+    let other = run(&[
+        "--seed",
+        "8",
+        "--participants",
+        "1",
+        "--per-participant",
+        "1",
+        "-o",
+        "c",
+    ]);
+    assert_eq!(other.status.code(), Some(0), "{}", transcript(&other));
+    insta::assert_snapshot!(transcript(&first));
+    let mut names: Vec<String> = std::fs::read_dir(tmp.join("a"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names.len(), 25, "{names:?}");
+    assert!(names.contains(&"simulation.json".to_string()));
+    for name in &names {
+        let a = std::fs::read(tmp.join("a").join(name)).unwrap();
+        let b = std::fs::read(tmp.join("b").join(name)).unwrap();
+        assert!(a == b, "{name} differs between two runs with the same seed");
+    }
+    assert_ne!(
+        std::fs::read(tmp.join("a/p01-d01.jsonl")).unwrap(),
+        std::fs::read(tmp.join("c/p01-d01.jsonl")).unwrap()
+    );
+    for name in names
+        .iter()
+        .filter(|n| n.ends_with(".jsonl") && !n.ends_with(".truth.jsonl"))
+    {
+        assert!(
+            names.contains(&name.replace(".jsonl", ".truth.jsonl")),
+            "{name}: no truth"
+        );
+        let out = demoplan()
+            .current_dir(tmp.join("a"))
+            .args(["inspect", name])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", transcript(&out));
+    }
+    let manifest: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(tmp.join("a/simulation.json")).unwrap()).unwrap();
+    assert_eq!(manifest["seed"], 7);
+    assert_eq!(manifest["recordings"].as_array().unwrap().len(), 12);
+    // No temporary file is left behind.
+    assert!(!names.iter().any(|n| n.contains("demoplan-tmp")));
+}
+
+#[test]
+fn simulate_rejects_bad_arguments_with_exit_36() {
+    let tmp = tempdir("simulate-bad");
+    std::fs::write(tmp.join("bad.json"), "{\"cubez\": 4}").unwrap();
+    std::fs::write(tmp.join("wrong.json"), "{\"release_grip\": 0.9}").unwrap();
+    for args in [
+        &["simulate"][..],
+        &["simulate", "-o", "out", "--participants", "0"],
+        &["simulate", "-o", "out", "--cubes", "2"],
+        &["simulate", "-o", "out", "--seed", "-1"],
+        &["simulate", "-o", "out", "--params", "missing.json"],
+        &["simulate", "-o", "out", "--params", "bad.json"],
+        &["simulate", "-o", "out", "--params", "wrong.json"],
+    ] {
+        let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(36),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+    }
+    assert!(
+        !tmp.join("out").exists(),
+        "wrote output despite bad arguments"
+    );
+}

@@ -95,6 +95,9 @@ pub enum SearchError {
     /// The task breaks its invariants.
     #[error("invalid task: {0}")]
     InvalidTask(#[from] TaskError),
+    /// A pattern of a pattern-database heuristic does not fit the task.
+    #[error("{0}")]
+    InvalidPattern(crate::pdb::PatternError),
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

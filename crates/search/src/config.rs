@@ -1,4 +1,5 @@
-//! Fast Downward-style search strings: `astar(blind())`, `astar(hmax())`.
+//! Fast Downward-style search strings: `astar(blind())`, `astar(hmax())`,
+//! `astar(ipdb(max_time=30))`.
 //!
 //! A string is first read as a generic term, `name(arg, key=value, ...)`, where a value is
 //! a term, a bare word (a number such as `10`, `1.5`, `2M` or `infinity`, or a name) or a
@@ -6,22 +7,26 @@
 //! [`HeuristicConfig`]'s interpretation.
 
 use std::fmt;
+use std::time::Duration;
 
 use task::Task;
 
-use crate::astar::SearchError;
+use crate::astar::{SearchError, SearchLimits};
+use crate::cpdbs::{systematic_patterns, CanonicalPdbs};
 use crate::heuristic::{Blind, Heuristic};
 use crate::hmax::HMax;
+use crate::ipdb::{hill_climbing, ipdb, IpdbConfig};
 use crate::lmcut::LmCut;
+use crate::pdb::build_collection;
 
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
 
 /// The heuristics demoplan computes.
-pub const HEURISTICS: &[&str] = &["blind", "hmax", "lmcut"];
+pub const HEURISTICS: &[&str] = &["blind", "hmax", "lmcut", "pdb", "ipdb", "cpdbs"];
 
 /// Heuristics Fast Downward has that demoplan will support, but does not yet.
-pub const PLANNED_HEURISTICS: &[&str] = &["ipdb", "cpdbs"];
+pub const PLANNED_HEURISTICS: &[&str] = &[];
 
 /// Fast Downward's aliases that demoplan knows: name and search string.
 pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
@@ -51,7 +56,7 @@ pub enum Engine {
 }
 
 /// A heuristic, as the search string names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq)]
 pub enum HeuristicConfig {
     /// [`Blind`].
     Blind,
@@ -59,35 +64,222 @@ pub enum HeuristicConfig {
     HMax,
     /// [`LmCut`].
     LmCut,
+    /// One [`PatternDatabase`](crate::PatternDatabase): `pdb(pattern=[0, 1])` (variable
+    /// indices of the task).
+    Pdb {
+        /// The pattern as given.
+        pattern: Vec<u32>,
+    },
+    /// The canonical heuristic over the hill climbing's collection ([`ipdb`]).
+    Ipdb(IpdbConfig),
+    /// The canonical heuristic ([`CanonicalPdbs`]) over a pattern collection:
+    /// `cpdbs(patterns=systematic(2))`.
+    Cpdbs {
+        /// Where the patterns come from.
+        patterns: PatternCollectionConfig,
+        /// Time limit of the dominance pruning of cliques (`None`: unlimited; zero: no
+        /// pruning).
+        max_time_dominance_pruning: Option<Duration>,
+    },
+}
+
+/// A pattern collection generator of `cpdbs(patterns=...)`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PatternCollectionConfig {
+    /// `manual_patterns([[0, 1], [2]])` (or just the list): these patterns.
+    Manual(Vec<Vec<u32>>),
+    /// `systematic(n)`: every interesting pattern of at most `n` variables (`n` is 1 or
+    /// 2); see [`systematic_patterns`](crate::cpdbs::systematic_patterns).
+    Systematic(u32),
+    /// `hillclimbing(...)`, with the options of `ipdb()` (whose
+    /// `max_time_dominance_pruning` is ignored here: `cpdbs`' own option counts).
+    HillClimbing(IpdbConfig),
 }
 
 impl HeuristicConfig {
     /// Its name in search strings.
-    pub fn name(self) -> &'static str {
+    pub fn name(&self) -> &'static str {
         match self {
             HeuristicConfig::Blind => "blind",
             HeuristicConfig::HMax => "hmax",
             HeuristicConfig::LmCut => "lmcut",
+            HeuristicConfig::Pdb { .. } => "pdb",
+            HeuristicConfig::Ipdb(_) => "ipdb",
+            HeuristicConfig::Cpdbs { .. } => "cpdbs",
         }
     }
 
-    /// The heuristic for `task`; fails if the task is invalid.
-    pub fn build(self, task: &Task) -> Result<Box<dyn Heuristic>, SearchError> {
+    /// The heuristic for `task`; fails if the task is invalid or a pattern does not fit
+    /// it.
+    pub fn build(&self, task: &Task) -> Result<Box<dyn Heuristic>, SearchError> {
+        self.build_with_limits(task, &SearchLimits::default())
+    }
+
+    /// Like [`build`](Self::build), but a pattern-collection generator that can stop
+    /// early (the hill climbing of `ipdb`) stops at `limits.deadline` or once memory use
+    /// exceeds `limits.memory_limit_bytes`, keeping what it has: the search then reports
+    /// the limit itself.
+    pub fn build_with_limits(
+        &self,
+        task: &Task,
+        limits: &SearchLimits,
+    ) -> Result<Box<dyn Heuristic>, SearchError> {
         Ok(match self {
             HeuristicConfig::Blind => Box::new(Blind::new(task)),
             HeuristicConfig::HMax => Box::new(HMax::new(task)?),
             HeuristicConfig::LmCut => Box::new(LmCut::new(task)?),
+            HeuristicConfig::Pdb { pattern } => {
+                let pdbs = build_collection(task, std::slice::from_ref(pattern))?;
+                Box::new(CanonicalPdbs::new(task, pdbs, None, "pdb"))
+            }
+            HeuristicConfig::Ipdb(config) => Box::new(ipdb(task, config, limits)?),
+            HeuristicConfig::Cpdbs {
+                patterns,
+                max_time_dominance_pruning,
+            } => {
+                let start = std::time::Instant::now();
+                let pruning = match max_time_dominance_pruning {
+                    Some(t) if t.is_zero() => None,
+                    Some(t) => Some(*t),
+                    None => Some(Duration::MAX / 4),
+                };
+                let (pdbs, climb) = match patterns {
+                    PatternCollectionConfig::Manual(patterns) => {
+                        (build_collection(task, patterns)?, None)
+                    }
+                    PatternCollectionConfig::Systematic(size) => {
+                        task.validate()?;
+                        let patterns = systematic_patterns(task, *size as usize);
+                        (build_collection(task, &patterns)?, None)
+                    }
+                    PatternCollectionConfig::HillClimbing(config) => {
+                        task.validate()?;
+                        let (pdbs, climb) = hill_climbing(task, config, limits);
+                        (pdbs, Some(climb))
+                    }
+                };
+                let mut h = CanonicalPdbs::new(task, pdbs, pruning, "cpdbs");
+                let statistics = h.statistics_mut();
+                statistics.hill_climbing = climb;
+                statistics.total_time = start.elapsed();
+                Box::new(h)
+            }
         })
     }
 }
 
 impl fmt::Display for SearchConfig {
-    /// The canonical search string: `astar(hmax())`.
+    /// The canonical search string: `astar(hmax())`, `astar(ipdb(max_time=30))`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.engine {
-            Engine::AStar => write!(f, "astar({}())", self.heuristic.name()),
+            Engine::AStar => write!(f, "astar({})", self.heuristic),
         }
     }
+}
+
+impl fmt::Display for HeuristicConfig {
+    /// The canonical form: `hmax()`, `pdb(pattern=[0, 1])`, `ipdb(max_time=30)` (options
+    /// at their defaults left out).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            HeuristicConfig::Pdb { pattern } => write!(f, "pdb(pattern={})", List(pattern)),
+            HeuristicConfig::Ipdb(config) => {
+                write!(f, "ipdb(")?;
+                write_ipdb_options(f, config, true)?;
+                write!(f, ")")
+            }
+            HeuristicConfig::Cpdbs {
+                patterns,
+                max_time_dominance_pruning,
+            } => {
+                write!(f, "cpdbs(patterns=")?;
+                match patterns {
+                    PatternCollectionConfig::Manual(patterns) => {
+                        write!(f, "manual_patterns([")?;
+                        for (i, p) in patterns.iter().enumerate() {
+                            let comma = if i > 0 { ", " } else { "" };
+                            write!(f, "{comma}{}", List(p))?;
+                        }
+                        write!(f, "])")?;
+                    }
+                    PatternCollectionConfig::Systematic(size) => write!(f, "systematic({size})")?,
+                    PatternCollectionConfig::HillClimbing(config) => {
+                        write!(f, "hillclimbing(")?;
+                        write_ipdb_options(f, config, false)?;
+                        write!(f, ")")?;
+                    }
+                }
+                if let Some(t) = max_time_dominance_pruning {
+                    write!(f, ", max_time_dominance_pruning={}", t.as_secs_f64())?;
+                }
+                write!(f, ")")
+            }
+            other => write!(f, "{}()", other.name()),
+        }
+    }
+}
+
+/// `[0, 1]`.
+struct List<'a>(&'a [u32]);
+
+impl fmt::Display for List<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "[")?;
+        for (i, v) in self.0.iter().enumerate() {
+            let comma = if i > 0 { ", " } else { "" };
+            write!(f, "{comma}{v}")?;
+        }
+        write!(f, "]")
+    }
+}
+
+/// The options of `config` that differ from the defaults, as `key=value, ...`.
+fn write_ipdb_options(
+    f: &mut fmt::Formatter<'_>,
+    config: &IpdbConfig,
+    with_pruning: bool,
+) -> fmt::Result {
+    let default = IpdbConfig::default();
+    let mut options: Vec<String> = Vec::new();
+    let int = |v: u64| {
+        if v == u64::MAX {
+            "infinity".to_string()
+        } else {
+            v.to_string()
+        }
+    };
+    let seconds = |t: Option<Duration>| t.map_or("infinity".to_string(), |t| t.as_secs_f64().to_string());
+    if config.pdb_max_size != default.pdb_max_size {
+        options.push(format!("pdb_max_size={}", int(config.pdb_max_size)));
+    }
+    if config.collection_max_size != default.collection_max_size {
+        options.push(format!("collection_max_size={}", int(config.collection_max_size)));
+    }
+    if config.num_samples != default.num_samples {
+        options.push(format!("num_samples={}", config.num_samples));
+    }
+    if config.min_improvement != default.min_improvement {
+        options.push(format!("min_improvement={}", config.min_improvement));
+    }
+    if config.max_time != default.max_time {
+        options.push(format!("max_time={}", seconds(config.max_time)));
+    }
+    if config.random_seed != default.random_seed {
+        options.push(format!("random_seed={}", config.random_seed));
+    }
+    if config.max_generated_patterns != default.max_generated_patterns {
+        options.push(format!(
+            "max_generated_patterns={}",
+            int(config.max_generated_patterns.unwrap_or(u64::MAX))
+        ));
+    }
+    if with_pruning && config.max_time_dominance_pruning != default.max_time_dominance_pruning {
+        options.push(format!(
+            "max_time_dominance_pruning={}",
+            seconds(config.max_time_dominance_pruning)
+        ));
+    }
+    write!(f, "{}", options.join(", "))
 }
 
 /// What is wrong with a search string. Every message ends with the known search engines
@@ -151,11 +343,15 @@ pub enum ConfigError {
 
 /// The list of known names that ends every error message.
 fn known() -> String {
+    let planned = if PLANNED_HEURISTICS.is_empty() {
+        String::new()
+    } else {
+        format!(" (planned: {})", PLANNED_HEURISTICS.join(", "))
+    };
     format!(
-        "known search engines: {}\nknown heuristics: {} (planned: {})",
+        "known search engines: {}\nknown heuristics: {}{planned}",
         SEARCH_ENGINES.join(", "),
         HEURISTICS.join(", "),
-        PLANNED_HEURISTICS.join(", ")
     )
 }
 
@@ -203,6 +399,9 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
         "blind" => HeuristicConfig::Blind,
         "hmax" => HeuristicConfig::HMax,
         "lmcut" => HeuristicConfig::LmCut,
+        "pdb" => return interpret_pdb(term),
+        "ipdb" => return Ok(HeuristicConfig::Ipdb(interpret_ipdb(term, true)?)),
+        "cpdbs" => return interpret_cpdbs(term),
         name if PLANNED_HEURISTICS.contains(&name) => {
             return Err(ConfigError::NotYetSupported {
                 name: name.to_string(),
@@ -222,6 +421,255 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
     };
     Args::new(term, &[])?.finish()?;
     Ok(heuristic)
+}
+
+/// `pdb(pattern=[0, 1])` or `pdb(pattern=manual_pattern([0, 1]))`.
+fn interpret_pdb(term: &Term) -> Result<HeuristicConfig, ConfigError> {
+    let mut args = Args::new(term, &["pattern"])?;
+    let value = args
+        .take("pattern")?
+        .ok_or_else(|| ConfigError::MissingArgument {
+            function: "pdb".into(),
+            argument: "pattern".into(),
+        })?;
+    args.finish()?;
+    let list = match value {
+        Value::Term(t) if t.name == "manual_pattern" => {
+            let mut args = Args::new(t, &["pattern"])?;
+            let list = args
+                .take("pattern")?
+                .ok_or_else(|| ConfigError::MissingArgument {
+                    function: "manual_pattern".into(),
+                    argument: "pattern".into(),
+                })?;
+            args.finish()?;
+            list
+        }
+        Value::Term(t) if t.args.is_empty() && !t.name.starts_with(|c: char| c.is_alphabetic()) => {
+            return Err(invalid("pdb", "`pattern` must be a list of variables such as [0, 1]"))
+        }
+        Value::Term(t) => {
+            return Err(ConfigError::InvalidArgument {
+                function: "pdb".into(),
+                message: format!("the pattern generator `{}` is not supported; give a list of variables such as [0, 1]", t.name),
+            })
+        }
+        list => list,
+    };
+    Ok(HeuristicConfig::Pdb {
+        pattern: variables("pdb", list)?,
+    })
+}
+
+/// The options of `ipdb(...)` (with `max_time_dominance_pruning`) or `hillclimbing(...)`.
+fn interpret_ipdb(term: &Term, with_pruning: bool) -> Result<IpdbConfig, ConfigError> {
+    const PARAMS: &[&str] = &[
+        "pdb_max_size",
+        "collection_max_size",
+        "num_samples",
+        "min_improvement",
+        "max_time",
+        "random_seed",
+        "max_generated_patterns",
+        "max_time_dominance_pruning",
+    ];
+    let params = if with_pruning {
+        PARAMS
+    } else {
+        &PARAMS[..PARAMS.len() - 1]
+    };
+    let function = term.name.as_str();
+    let mut args = Args::new(term, params)?;
+    let mut config = IpdbConfig::default();
+    if let Some(v) = args.take("pdb_max_size")? {
+        config.pdb_max_size = positive(function, "pdb_max_size", integer(function, v, true)?)?;
+    }
+    if let Some(v) = args.take("collection_max_size")? {
+        config.collection_max_size = positive(
+            function,
+            "collection_max_size",
+            integer(function, v, true)?,
+        )?;
+    }
+    if let Some(v) = args.take("num_samples")? {
+        let n = positive(function, "num_samples", integer(function, v, false)?)?;
+        config.num_samples = u32::try_from(n).map_err(|_| invalid(function, "`num_samples` is too large"))?;
+    }
+    if let Some(v) = args.take("min_improvement")? {
+        let n = positive(function, "min_improvement", integer(function, v, false)?)?;
+        config.min_improvement =
+            u32::try_from(n).map_err(|_| invalid(function, "`min_improvement` is too large"))?;
+    }
+    if let Some(v) = args.take("max_time")? {
+        config.max_time = seconds(function, v)?;
+    }
+    if let Some(v) = args.take("random_seed")? {
+        config.random_seed = match word(v) {
+            Some("-1") => 0,
+            _ => integer(function, v, false)?,
+        };
+    }
+    if let Some(v) = args.take("max_generated_patterns")? {
+        config.max_generated_patterns = match integer(function, v, true)? {
+            u64::MAX => None,
+            n => Some(n),
+        };
+    }
+    if with_pruning {
+        if let Some(v) = args.take("max_time_dominance_pruning")? {
+            config.max_time_dominance_pruning = seconds(function, v)?;
+        }
+    }
+    args.finish()?;
+    Ok(config)
+}
+
+/// `cpdbs(patterns=..., max_time_dominance_pruning=...)`.
+fn interpret_cpdbs(term: &Term) -> Result<HeuristicConfig, ConfigError> {
+    let mut args = Args::new(term, &["patterns", "max_time_dominance_pruning"])?;
+    let patterns = args.take("patterns")?;
+    let pruning = args.take("max_time_dominance_pruning")?;
+    args.finish()?;
+    let patterns = match patterns {
+        // Fast Downward's default: systematic(1).
+        None => PatternCollectionConfig::Systematic(1),
+        Some(Value::List(items)) => PatternCollectionConfig::Manual(
+            items
+                .iter()
+                .map(|p| variables("cpdbs", p))
+                .collect::<Result<_, _>>()?,
+        ),
+        Some(Value::Term(t)) => match t.name.as_str() {
+            "manual_patterns" => {
+                let mut args = Args::new(t, &["patterns"])?;
+                let list = args
+                    .take("patterns")?
+                    .ok_or_else(|| ConfigError::MissingArgument {
+                        function: "manual_patterns".into(),
+                        argument: "patterns".into(),
+                    })?;
+                args.finish()?;
+                let Value::List(items) = list else {
+                    return Err(invalid("manual_patterns", "expected a list of patterns such as [[0, 1], [2]]"));
+                };
+                PatternCollectionConfig::Manual(
+                    items
+                        .iter()
+                        .map(|p| variables("manual_patterns", p))
+                        .collect::<Result<_, _>>()?,
+                )
+            }
+            "systematic" => {
+                let mut args = Args::new(t, &["pattern_max_size"])?;
+                let size = match args.take("pattern_max_size")? {
+                    Some(v) => integer("systematic", v, false)?,
+                    None => 1,
+                };
+                args.finish()?;
+                if !(1..=2).contains(&size) {
+                    return Err(invalid(
+                        "systematic",
+                        "`pattern_max_size` must be 1 or 2 (larger sizes are not supported)",
+                    ));
+                }
+                PatternCollectionConfig::Systematic(size as u32)
+            }
+            "hillclimbing" => PatternCollectionConfig::HillClimbing(interpret_ipdb(t, false)?),
+            name => {
+                return Err(ConfigError::InvalidArgument {
+                    function: "cpdbs".into(),
+                    message: format!(
+                        "unknown pattern collection generator `{name}` (known: manual_patterns, systematic, hillclimbing)"
+                    ),
+                })
+            }
+        },
+    };
+    let max_time_dominance_pruning = match pruning {
+        Some(v) => seconds("cpdbs", v)?,
+        None => None,
+    };
+    Ok(HeuristicConfig::Cpdbs {
+        patterns,
+        max_time_dominance_pruning,
+    })
+}
+
+fn invalid(function: &str, message: &str) -> ConfigError {
+    ConfigError::InvalidArgument {
+        function: function.into(),
+        message: message.into(),
+    }
+}
+
+/// A bare word: a term without arguments.
+fn word(value: &Value) -> Option<&str> {
+    match value {
+        Value::Term(t) if t.args.is_empty() => Some(&t.name),
+        _ => None,
+    }
+}
+
+/// A non-negative integer with an optional suffix `k`, `m` or `g` (thousands, millions,
+/// billions), or `infinity` (`u64::MAX`) where `infinity` is allowed.
+fn integer(function: &str, value: &Value, infinity: bool) -> Result<u64, ConfigError> {
+    let error = || match word(value) {
+        Some(w) => invalid(function, &format!("`{w}` is not a non-negative integer")),
+        None => invalid(function, "expected a non-negative integer"),
+    };
+    let w = word(value).ok_or_else(error)?;
+    if infinity && w == "infinity" {
+        return Ok(u64::MAX);
+    }
+    let (digits, factor) = match w.char_indices().last() {
+        Some((i, 'k' | 'K')) => (&w[..i], 1_000),
+        Some((i, 'm' | 'M')) => (&w[..i], 1_000_000),
+        Some((i, 'g' | 'G')) => (&w[..i], 1_000_000_000),
+        _ => (w, 1),
+    };
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(error());
+    }
+    digits
+        .parse::<u64>()
+        .ok()
+        .and_then(|n| n.checked_mul(factor))
+        .ok_or_else(error)
+}
+
+fn positive(function: &str, param: &str, n: u64) -> Result<u64, ConfigError> {
+    if n == 0 {
+        return Err(invalid(function, &format!("`{param}` must be positive")));
+    }
+    Ok(n)
+}
+
+/// Seconds (`30`, `1.5`) or `infinity` (`None`).
+fn seconds(function: &str, value: &Value) -> Result<Option<Duration>, ConfigError> {
+    let w = word(value).ok_or_else(|| invalid(function, "expected a number of seconds"))?;
+    if w == "infinity" {
+        return Ok(None);
+    }
+    w.parse::<f64>()
+        .ok()
+        .filter(|t| t.is_finite() && *t >= 0.0 && !w.starts_with(['+', '-']))
+        .and_then(|t| Duration::try_from_secs_f64(t).ok())
+        .map(Some)
+        .ok_or_else(|| invalid(function, &format!("`{w}` is not a number of seconds")))
+}
+
+/// A list of variable indices: `[0, 1]`.
+fn variables(function: &str, value: &Value) -> Result<Vec<u32>, ConfigError> {
+    let Value::List(items) = value else {
+        return Err(invalid(function, "expected a list of variables such as [0, 1]"));
+    };
+    items
+        .iter()
+        .map(|item| {
+            let n = integer(function, item, false)?;
+            u32::try_from(n).map_err(|_| invalid(function, "a variable index is too large"))
+        })
+        .collect()
 }
 
 /// A term: `name` or `name(args)`.
@@ -502,14 +950,152 @@ mod tests {
     }
 
     #[test]
-    fn planned_heuristics_are_not_yet_supported() {
+    fn pattern_database_strings() {
+        let pdb = |p: &[u32]| HeuristicConfig::Pdb {
+            pattern: p.to_vec(),
+        };
+        let h = |s: &str| ok(s).heuristic;
+        assert_eq!(h("astar(pdb(pattern=[0, 1]))"), pdb(&[0, 1]));
+        assert_eq!(h("astar(pdb([2,0]))"), pdb(&[2, 0]));
+        assert_eq!(h("astar(pdb(pattern=manual_pattern([0,1])))"), pdb(&[0, 1]));
+        assert_eq!(h("astar(pdb(manual_pattern(pattern=[3])))"), pdb(&[3]));
+        assert_eq!(h("astar(pdb(pattern=[]))"), pdb(&[]));
+        assert_eq!(h("astar(ipdb())"), HeuristicConfig::Ipdb(IpdbConfig::default()));
         assert_eq!(
-            err("astar(ipdb(max_time=infinity, pdb_max_size=2000000))"),
-            "heuristic `ipdb` is not yet supported by demoplan"
+            h("astar(ipdb(max_time=30, pdb_max_size=2k, collection_max_size=10M, \
+               num_samples=50, min_improvement=3, random_seed=7, \
+               max_generated_patterns=100, max_time_dominance_pruning=0.5))"),
+            HeuristicConfig::Ipdb(IpdbConfig {
+                pdb_max_size: 2000,
+                collection_max_size: 10_000_000,
+                num_samples: 50,
+                min_improvement: 3,
+                max_time: Some(Duration::from_secs(30)),
+                random_seed: 7,
+                max_generated_patterns: Some(100),
+                max_time_dominance_pruning: Some(Duration::from_millis(500)),
+            })
         );
         assert_eq!(
-            err("astar(cpdbs(patterns=[[0, 1], [2]]))"),
-            "heuristic `cpdbs` is not yet supported by demoplan"
+            h("astar(ipdb(random_seed=-1, max_time=infinity, collection_max_size=infinity, \
+               max_generated_patterns=infinity))"),
+            HeuristicConfig::Ipdb(IpdbConfig {
+                collection_max_size: u64::MAX,
+                ..IpdbConfig::default()
+            })
+        );
+        let cpdbs = |patterns, pruning| HeuristicConfig::Cpdbs {
+            patterns,
+            max_time_dominance_pruning: pruning,
+        };
+        use PatternCollectionConfig::*;
+        assert_eq!(h("astar(cpdbs())"), cpdbs(Systematic(1), None));
+        assert_eq!(h("astar(cpdbs(systematic(2)))"), cpdbs(Systematic(2), None));
+        assert_eq!(
+            h("astar(cpdbs(patterns=systematic(pattern_max_size=2), max_time_dominance_pruning=0))"),
+            cpdbs(Systematic(2), Some(Duration::ZERO))
+        );
+        let manual = Manual(vec![vec![0, 1], vec![2]]);
+        assert_eq!(h("astar(cpdbs([[0,1],[2]]))"), cpdbs(manual.clone(), None));
+        assert_eq!(
+            h("astar(cpdbs(patterns=manual_patterns([[0, 1], [2]])))"),
+            cpdbs(manual, None)
+        );
+        let climb = IpdbConfig {
+            max_time: Some(Duration::from_secs(5)),
+            ..IpdbConfig::default()
+        };
+        assert_eq!(
+            h("astar(cpdbs(hillclimbing(max_time=5)))"),
+            cpdbs(HillClimbing(climb), None)
+        );
+        // Canonical strings, which parse back to the same configuration.
+        for (given, canonical) in [
+            ("astar(pdb(manual_pattern([2,0])))", "astar(pdb(pattern=[2, 0]))"),
+            ("astar(ipdb())", "astar(ipdb())"),
+            (
+                "astar(ipdb(max_time=1.5,random_seed=3, num_samples=10))",
+                "astar(ipdb(num_samples=10, max_time=1.5, random_seed=3))",
+            ),
+            (
+                "astar(ipdb(collection_max_size=infinity, max_time_dominance_pruning=0))",
+                "astar(ipdb(collection_max_size=infinity, max_time_dominance_pruning=0))",
+            ),
+            ("astar(cpdbs())", "astar(cpdbs(patterns=systematic(1)))"),
+            (
+                "astar(cpdbs([[0,1],[2]], max_time_dominance_pruning=2))",
+                "astar(cpdbs(patterns=manual_patterns([[0, 1], [2]]), max_time_dominance_pruning=2))",
+            ),
+            (
+                "astar(cpdbs(hillclimbing(pdb_max_size=1000)))",
+                "astar(cpdbs(patterns=hillclimbing(pdb_max_size=1000)))",
+            ),
+        ] {
+            let config = ok(given);
+            assert_eq!(config.to_string(), canonical);
+            assert_eq!(ok(canonical), config);
+        }
+    }
+
+    #[test]
+    fn pattern_database_errors() {
+        assert_eq!(err("astar(pdb())"), "`pdb` needs the argument `pattern`");
+        assert_eq!(
+            err("astar(pdb(pattern=greedy()))"),
+            "`pdb`: the pattern generator `greedy` is not supported; give a list of variables such as [0, 1]"
+        );
+        assert_eq!(
+            err("astar(pdb(pattern=3))"),
+            "`pdb`: `pattern` must be a list of variables such as [0, 1]"
+        );
+        assert_eq!(
+            err("astar(pdb(pattern=[a]))"),
+            "`pdb`: `a` is not a non-negative integer"
+        );
+        assert_eq!(
+            err("astar(pdb(pattern=[99999999999]))"),
+            "`pdb`: a variable index is too large"
+        );
+        assert_eq!(
+            err("astar(ipdb(max_time=-1))"),
+            "`ipdb`: `-1` is not a number of seconds"
+        );
+        assert_eq!(
+            err("astar(ipdb(max_time=[]))"),
+            "`ipdb`: expected a number of seconds"
+        );
+        assert_eq!(
+            err("astar(ipdb(num_samples=0))"),
+            "`ipdb`: `num_samples` must be positive"
+        );
+        assert_eq!(
+            err("astar(ipdb(pdb_max_size=[1]))"),
+            "`ipdb`: expected a non-negative integer"
+        );
+        assert_eq!(
+            err("astar(ipdb(num_samples=infinity))"),
+            "`ipdb`: `infinity` is not a non-negative integer"
+        );
+        assert_eq!(
+            err("astar(ipdb(random_seed=-2))"),
+            "`ipdb`: `-2` is not a non-negative integer"
+        );
+        assert_eq!(err("astar(ipdb(foo=1))"), "`ipdb` does not take the argument `foo=`");
+        assert_eq!(
+            err("astar(cpdbs(systematic(3)))"),
+            "`systematic`: `pattern_max_size` must be 1 or 2 (larger sizes are not supported)"
+        );
+        assert_eq!(
+            err("astar(cpdbs(patterns=genetic()))"),
+            "`cpdbs`: unknown pattern collection generator `genetic` (known: manual_patterns, systematic, hillclimbing)"
+        );
+        assert_eq!(
+            err("astar(cpdbs(hillclimbing(max_time_dominance_pruning=1)))"),
+            "`hillclimbing` does not take the argument `max_time_dominance_pruning=`"
+        );
+        assert_eq!(
+            err("astar(cpdbs(manual_patterns([0])))"),
+            "`manual_patterns`: expected a list of variables such as [0, 1]"
         );
     }
 
@@ -586,12 +1172,12 @@ mod tests {
 
     #[test]
     fn the_full_message_lists_known_names() {
-        let e = parse_search("astar(ipdb())").unwrap_err();
+        let e = parse_search("astar(ff())").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "heuristic `ipdb` is not yet supported by demoplan\n\
+            "unknown heuristic `ff`\n\
              known search engines: astar\n\
-             known heuristics: blind, hmax, lmcut (planned: ipdb, cpdbs)"
+             known heuristics: blind, hmax, lmcut, pdb, ipdb, cpdbs"
         );
     }
 
@@ -656,10 +1242,41 @@ mod tests {
             operators: vec![],
             use_costs: false,
         };
-        for config in [HeuristicConfig::Blind, HeuristicConfig::HMax] {
+        let configs = [
+            "blind()",
+            "hmax()",
+            "lmcut()",
+            "pdb([0])",
+            "ipdb()",
+            "cpdbs()",
+            "cpdbs(systematic(2))",
+            "cpdbs([[0], []])",
+            "cpdbs(hillclimbing())",
+        ];
+        for config in configs {
+            let config = ok(&format!("astar({config})")).heuristic;
             let mut h = config.build(&task).unwrap();
             assert_eq!(h.name(), config.name());
             assert_eq!(h.evaluate(&[0]), Some(0));
+            assert_eq!(
+                h.pdb_statistics().is_some(),
+                matches!(
+                    config,
+                    HeuristicConfig::Pdb { .. }
+                        | HeuristicConfig::Ipdb(_)
+                        | HeuristicConfig::Cpdbs { .. }
+                )
+            );
         }
+        let climbs = ok("astar(cpdbs(hillclimbing()))").heuristic.build(&task).unwrap();
+        assert!(climbs.pdb_statistics().unwrap().hill_climbing.is_some());
+        // A pattern that does not fit the task.
+        let e = ok("astar(pdb([0, 3]))").heuristic.build(&task).err().unwrap();
+        assert_eq!(
+            e.to_string(),
+            "pattern variable 3 does not exist (the task has 1 variables)"
+        );
+        let e = ok("astar(cpdbs([[0], [1]]))").heuristic.build(&task).err().unwrap();
+        assert!(matches!(e, SearchError::InvalidPattern(_)));
     }
 }

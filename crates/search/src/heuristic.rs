@@ -2,6 +2,8 @@
 
 use task::{Fact, Task};
 
+use crate::cpdbs::PdbStatistics;
+
 /// An estimate of the cost from a state to the goal.
 ///
 /// The search calls [`evaluate`](Self::evaluate) once per newly registered state, with
@@ -19,6 +21,12 @@ pub trait Heuristic {
 
     /// The estimate for `state`, or `None` if the state is a dead end.
     fn evaluate(&mut self, state: &[u32]) -> Option<u64>;
+
+    /// For pattern-database heuristics (`pdb`, `ipdb`, `cpdbs`): what building them did
+    /// (patterns, sizes, the hill climbing), for logs. `None` for the others.
+    fn pdb_statistics(&self) -> Option<&PdbStatistics> {
+        None
+    }
 }
 
 impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
@@ -28,6 +36,10 @@ impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
 
     fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
         (**self).evaluate(state)
+    }
+
+    fn pdb_statistics(&self) -> Option<&PdbStatistics> {
+        (**self).pdb_statistics()
     }
 }
 

@@ -54,10 +54,13 @@
 
 mod astar;
 mod config;
+mod cpdbs;
 mod heuristic;
 mod hmax;
+mod ipdb;
 mod lmcut;
 mod open_list;
+mod pdb;
 mod plan;
 mod radix_heap;
 mod segmented;
@@ -69,9 +72,12 @@ pub use config::{
     alias, parse_search, ConfigError, Engine, HeuristicConfig, SearchConfig, ALIASES, HEURISTICS,
     PLANNED_HEURISTICS, SEARCH_ENGINES,
 };
+pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
+pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig};
 pub use lmcut::LmCut;
+pub use pdb::{PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;
@@ -84,7 +90,7 @@ pub fn search(
     limits: &SearchLimits,
     observer: Option<&mut dyn FnMut(Progress)>,
 ) -> Result<SearchResult, SearchError> {
-    let mut heuristic = config.heuristic.build(task)?;
+    let mut heuristic = config.heuristic.build_with_limits(task, limits)?;
     match config.engine {
         Engine::AStar => astar(task, &mut heuristic, limits, observer),
     }

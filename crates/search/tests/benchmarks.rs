@@ -1,15 +1,21 @@
-//! LM-cut on real tasks: on states sampled by random walks from the initial state of
-//! benchmark instances, LM-cut equals the from-scratch reference, dominates h^max, and is
-//! 0 exactly on goal states.
+//! Heuristics on real tasks. LM-cut: on states sampled by random walks from the initial
+//! state of benchmark instances, it equals the from-scratch reference, dominates h^max,
+//! and is 0 exactly on goal states. Pattern databases: A* with iPDB (sizes capped to keep
+//! the test quick) and with the systematic patterns reaches the optimal cost.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
 mod common;
 
-use search::{HMax, Heuristic, LmCut};
+use search::{astar, parse_search, HMax, Heuristic, LmCut, Outcome, SearchLimits};
 use task::Task;
 
 fn translated(domain: &str, instance: &str) -> Task {
+    translated_with_optimum(domain, instance).0
+}
+
+/// The task of a benchmark instance and its optimal cost.
+fn translated_with_optimum(domain: &str, instance: &str) -> (Task, u64) {
     let suite = benchmarks::Suite::locate().unwrap();
     let i = suite
         .instances()
@@ -17,14 +23,16 @@ fn translated(domain: &str, instance: &str) -> Task {
         .into_iter()
         .find(|i| i.domain == domain && i.name == instance)
         .unwrap();
+    let optimum = i.optimal_cost;
     let d = pddl::parse_domain(&std::fs::read_to_string(&i.domain_file).unwrap()).unwrap();
     let p = pddl::parse_problem(&std::fs::read_to_string(&i.problem_file).unwrap()).unwrap();
-    match translate::translate(&d, &p).unwrap() {
+    let task = match translate::translate(&d, &p).unwrap() {
         translate::Translation::Task(t) => t.task,
         translate::Translation::Unsolvable { reason, .. } => {
             panic!("{domain}/{instance}: {reason}")
         }
-    }
+    };
+    (task, optimum)
 }
 
 /// States on random walks from the initial state (a fixed-seed generator: reproducible).
@@ -90,6 +98,47 @@ fn lmcut_equals_the_reference_on_sampled_states_of_benchmark_tasks() {
             if task.is_goal(state) {
                 assert_eq!(h, Some(0));
             }
+        }
+    }
+}
+
+#[test]
+fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
+    let instances = [
+        ("blocks", "probBLOCKS-5-1"),
+        ("gripper", "prob02"),
+        ("logistics00", "probLOGISTICS-4-0"),
+        ("depot", "p01"),
+        ("elevators-opt08-strips", "p01"),
+        ("parcprinter-08-strips", "p01"),
+        ("openstacks-opt08-strips", "p01"),
+        ("pegsol-08-strips", "p02"),
+        ("sokoban-opt08-strips", "p01"),
+        ("miconic", "s3-0"),
+        ("airport", "p01-airport1-p1"),
+        ("visitall-opt11-strips", "problem03-full"),
+    ];
+    let configs = [
+        "astar(ipdb(pdb_max_size=20000, collection_max_size=200000, num_samples=200))",
+        "astar(cpdbs(systematic(2)))",
+    ];
+    for (domain, instance) in instances {
+        let (task, optimum) = translated_with_optimum(domain, instance);
+        for config in configs {
+            let config = parse_search(config).unwrap();
+            let t0 = std::time::Instant::now();
+            let mut h = config.heuristic.build(&task).unwrap();
+            let statistics = h.pdb_statistics().unwrap().clone();
+            assert!(statistics.patterns > 0 || task.goal.is_empty());
+            let result = astar(&task, &mut h, &SearchLimits::default(), None).unwrap();
+            let Outcome::Solved(plan) = result.outcome else {
+                panic!("{domain}/{instance} {config}: {:?}", result.outcome)
+            };
+            assert_eq!(plan.cost, optimum, "{domain}/{instance} {config}");
+            let h0 = result.statistics.initial_h.unwrap();
+            assert!(h0 <= optimum, "{domain}/{instance} {config}: h = {h0}");
+            assert!(task.is_goal(&search::replay(&task, &plan.operators).unwrap()));
+            eprintln!("TIMING {domain}/{instance} {config}: {:?} expanded {} h0 {h0} opt {optimum} patterns {}", t0.elapsed(), result.statistics.expanded, statistics.patterns);
         }
     }
 }

@@ -9,7 +9,10 @@ use proptest::prelude::*;
 
 mod common;
 use common::reference_lmcut;
-use search::{astar, replay, Blind, HMax, Heuristic, LmCut, Outcome, SearchLimits, SearchResult};
+use search::{
+    astar, ipdb, parse_search, replay, Blind, CanonicalPdbs, HMax, Heuristic, IpdbConfig, LmCut,
+    Outcome, PatternDatabase, SearchLimits, SearchResult,
+};
 use task::{Fact, OpId, Operator, Task, VarId, Variable};
 
 /// A partial assignment over variables of these domain sizes.
@@ -252,6 +255,148 @@ impl Space {
     }
 }
 
+/// A pattern database built the obvious way: every abstract state (values of the pattern's
+/// variables, numbered in mixed radix with the first variable least significant), every
+/// abstract transition (each operator applicable on the pattern's variables), and
+/// Dijkstra backwards from the abstract goal states.
+fn reference_pdb(task: &Task, pattern: &[usize]) -> Vec<Option<u64>> {
+    let sizes: Vec<usize> = pattern
+        .iter()
+        .map(|&v| task.variables[v].domain_size() as usize)
+        .collect();
+    let n: usize = sizes.iter().product();
+    let decode = |mut i: usize| -> Vec<u32> {
+        sizes
+            .iter()
+            .map(|&d| {
+                let value = (i % d) as u32;
+                i /= d;
+                value
+            })
+            .collect()
+    };
+    let encode = |values: &[u32]| -> usize {
+        values
+            .iter()
+            .zip(&sizes)
+            .rev()
+            .fold(0, |acc, (&v, &d)| acc * d + v as usize)
+    };
+    let holds = |facts: &[Fact], values: &[u32]| {
+        facts.iter().all(|f| {
+            pattern
+                .iter()
+                .position(|&v| v == f.var.index())
+                .is_none_or(|p| values[p] == f.value)
+        })
+    };
+    let mut reverse = vec![Vec::new(); n];
+    for (s, edges) in (0..n).map(|s| (s, decode(s))).map(|(s, values)| {
+        let edges: Vec<(usize, u64)> = task
+            .operators
+            .iter()
+            .filter(|op| holds(&op.preconditions, &values))
+            .map(|op| {
+                let mut t = values.clone();
+                for f in &op.effects {
+                    if let Some(p) = pattern.iter().position(|&v| v == f.var.index()) {
+                        t[p] = f.value;
+                    }
+                }
+                (encode(&t), task.cost(op))
+            })
+            .collect();
+        (s, edges)
+    }) {
+        for (t, c) in edges {
+            reverse[t].push((s, c));
+        }
+    }
+    let goals: Vec<usize> = (0..n).filter(|&s| holds(&task.goal, &decode(s))).collect();
+    Space::dijkstra(&reverse, &goals)
+}
+
+/// The index of `state` in [`reference_pdb`]'s numbering.
+fn abstract_index(task: &Task, pattern: &[usize], state: &[u32]) -> usize {
+    pattern.iter().rev().fold(0, |acc, &v| {
+        acc * task.variables[v].domain_size() as usize + state[v] as usize
+    })
+}
+
+/// The canonical heuristic the obvious way: the largest sum of the patterns' values
+/// ([`reference_pdb`]) over any set of pairwise additive patterns (no operator has
+/// effects on variables of both); `None` if a pattern calls the state a dead end.
+fn reference_canonical(task: &Task, patterns: &[Vec<usize>], state: &[u32]) -> Option<u64> {
+    let values: Vec<u64> = patterns
+        .iter()
+        .map(|p| reference_pdb(task, p)[abstract_index(task, p, state)])
+        .collect::<Option<_>>()?;
+    let additive = |a: &[usize], b: &[usize]| {
+        !task.operators.iter().any(|op| {
+            op.effects.iter().any(|f| a.contains(&f.var.index()))
+                && op.effects.iter().any(|f| b.contains(&f.var.index()))
+        })
+    };
+    let n = patterns.len();
+    (0u32..1 << n)
+        .filter(|set| {
+            (0..n).all(|i| {
+                (0..n).all(|j| {
+                    i == j
+                        || set >> i & 1 == 0
+                        || set >> j & 1 == 0
+                        || additive(&patterns[i], &patterns[j])
+                })
+            })
+        })
+        .map(|set| (0..n).filter(|&i| set >> i & 1 == 1).map(|i| values[i]).sum())
+        .max()
+}
+
+/// The patterns of a pattern-database heuristic, as variable indices.
+fn patterns_of(h: &CanonicalPdbs) -> Vec<Vec<usize>> {
+    h.pdbs()
+        .iter()
+        .map(|p| p.pattern().iter().map(|v| v.index()).collect())
+        .collect()
+}
+
+/// h <= h* on every state, and dead ends only where the goal is unreachable.
+fn check_admissible<H: Heuristic + ?Sized>(
+    task: &Task,
+    space: &Space,
+    h_star: &[Option<u64>],
+    h: &mut H,
+) -> Result<(), TestCaseError> {
+    for (s, state) in space.states.iter().enumerate() {
+        match (h.evaluate(state), h_star[s]) {
+            (Some(h), Some(exact)) => {
+                prop_assert!(h <= exact, "h = {} > h* = {} in {:?}", h, exact, state)
+            }
+            (None, Some(exact)) => {
+                prop_assert!(false, "dead end claimed in {:?} with h* = {}", state, exact)
+            }
+            (_, None) => {}
+        }
+    }
+    for state in space.states.iter().filter(|s| task.is_goal(s)) {
+        prop_assert_eq!(h.evaluate(state), Some(0));
+    }
+    Ok(())
+}
+
+/// Small hill-climbing options for tiny tasks.
+fn small_ipdb(seed: u64) -> IpdbConfig {
+    IpdbConfig {
+        pdb_max_size: 48,
+        collection_max_size: 200,
+        num_samples: 30,
+        min_improvement: 1,
+        random_seed: seed,
+        ..IpdbConfig::default()
+    }
+}
+
 fn run<H: Heuristic + ?Sized>(task: &Task, h: &mut H) -> SearchResult {
     astar(task, h, &SearchLimits::default(), None).unwrap()
 }
@@ -384,6 +529,119 @@ proptest! {
                 (None, Some(exact)) => prop_assert!(false, "dead end claimed in {:?} with h* = {}", state, exact),
                 (_, None) => {}
             }
+        }
+    }
+
+    #[test]
+    fn pdb_equals_the_explicit_abstract_graph(task in tasks(), mask in any::<u8>()) {
+        let pattern: Vec<usize> = (0..task.variables.len()).filter(|&v| mask >> v & 1 == 1).collect();
+        let reference = reference_pdb(&task, &pattern);
+        // Any order and duplicates give the same database.
+        let mut given: Vec<u32> = pattern.iter().rev().map(|&v| v as u32).collect();
+        given.extend(given.clone());
+        let pdb = PatternDatabase::new(&task, &given).unwrap();
+        prop_assert_eq!(pdb.size(), reference.len());
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        for (s, state) in space.states.iter().enumerate() {
+            let abstract_state: usize = pattern.iter().rev().fold(0, |acc, &v| {
+                acc * task.variables[v].domain_size() as usize + state[v] as usize
+            });
+            prop_assert_eq!(pdb.index(state), abstract_state);
+            let h = pdb.value(state);
+            prop_assert_eq!(h, reference[abstract_state], "in {:?}", state);
+            match (h, h_star[s]) {
+                (Some(h), Some(exact)) => prop_assert!(h <= exact),
+                (None, Some(exact)) => prop_assert!(false, "dead end claimed in {:?} with h* = {}", state, exact),
+                (_, None) => {}
+            }
+        }
+        prop_assert_eq!(pdb.has_dead_ends(), reference.contains(&None));
+    }
+
+    #[test]
+    fn canonical_pdbs_are_admissible_and_equal_the_reference(
+        task in tasks(),
+        masks in proptest::collection::vec(any::<u8>(), 1..=4),
+    ) {
+        let n = task.variables.len();
+        let patterns: Vec<Vec<u32>> = masks
+            .iter()
+            .map(|m| (0..n as u32).filter(|&v| m >> v & 1 == 1).collect())
+            .collect();
+        let pdbs: Vec<PatternDatabase> = patterns
+            .iter()
+            .map(|p| PatternDatabase::new(&task, p).unwrap())
+            .collect();
+        let mut plain = CanonicalPdbs::new(&task, pdbs.clone(), None, "cpdbs");
+        let mut pruned = CanonicalPdbs::new(&task, pdbs, Some(std::time::Duration::from_secs(60)), "cpdbs");
+        let mut distinct: Vec<Vec<usize>> = Vec::new();
+        for p in &patterns {
+            let p: Vec<usize> = p.iter().map(|&v| v as usize).collect();
+            if !distinct.contains(&p) {
+                distinct.push(p);
+            }
+        }
+        prop_assert_eq!(patterns_of(&plain), distinct.clone());
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        for state in &space.states {
+            let h = plain.evaluate(state);
+            prop_assert_eq!(h, reference_canonical(&task, &distinct, state), "in {:?}", state);
+            // Dominance pruning never changes a value.
+            prop_assert_eq!(pruned.evaluate(state), h);
+        }
+        check_admissible(&task, &space, &h_star, &mut plain)?;
+        let s = pruned.statistics();
+        prop_assert_eq!(s.patterns, pruned.pdbs().len());
+        prop_assert_eq!(s.cliques, pruned.cliques().count());
+        prop_assert_eq!(s.patterns + s.pruned_patterns, distinct.len());
+    }
+
+    #[test]
+    fn ipdb_is_admissible_deterministic_and_astar_with_it_optimal(task in tasks(), seed in 0u64..4) {
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        let config = small_ipdb(seed);
+        let mut h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        let climb = h.statistics().hill_climbing.clone().unwrap();
+        // The collection stays within its limit (unless the goal variables' databases
+        // alone exceed it).
+        let goal_vars: u64 = task.goal.iter().map(|f| u64::from(task.variables[f.var.index()].domain_size())).sum();
+        prop_assert!(climb.total_size <= config.collection_max_size.max(goal_vars));
+        // The value is the canonical heuristic of the collection it found.
+        let patterns = patterns_of(&h);
+        for state in &space.states {
+            prop_assert_eq!(h.evaluate(state), reference_canonical(&task, &patterns, state));
+        }
+        check_admissible(&task, &space, &h_star, &mut h)?;
+        // The same options give the same collection.
+        let again = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        prop_assert_eq!(patterns_of(&again), patterns);
+        let mut again_climb = again.statistics().hill_climbing.clone().unwrap();
+        again_climb.time = climb.time;
+        again_climb.pdb_time = climb.pdb_time;
+        again_climb.sampling_time = climb.sampling_time;
+        again_climb.evaluation_time = climb.evaluation_time;
+        prop_assert_eq!(again_climb, climb);
+
+        let forward = space.forward(&task);
+        let optimal = (0..space.states.len())
+            .filter(|&s| task.is_goal(&space.states[s]))
+            .filter_map(|s| forward[s])
+            .min();
+        let result = run(&task, &mut h);
+        prop_assert_eq!(cost(&result), optimal);
+        check_plan(&task, &result);
+    }
+
+    #[test]
+    fn pattern_database_configurations_are_admissible(task in tasks()) {
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        for s in ["astar(cpdbs(systematic(2)))", "astar(cpdbs())", "astar(ipdb(num_samples=20))"] {
+            let mut h = parse_search(s).unwrap().heuristic.build(&task).unwrap();
+            check_admissible(&task, &space, &h_star, &mut h)?;
         }
     }
 

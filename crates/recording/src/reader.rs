@@ -1,0 +1,653 @@
+//! The streaming reader: the header when it is made, then one frame at a time.
+
+use std::io::BufRead;
+
+use serde_json::Value;
+
+use crate::check;
+use crate::error::{ErrorKind, ReadError};
+use crate::model::{Entity, EntityKind, Frame, Header, Pose, Quaternion, Vec3};
+use crate::parser::{strip_position, FrameParser, LineError};
+use crate::{FORMAT_NAME, FORMAT_VERSION};
+
+/// Reads a recording line by line. Memory use is bounded by the longest line, whatever
+/// the length of the recording.
+///
+/// Blank lines are skipped (and counted); lines may end in `\n` or `\r\n`; the last line
+/// need not end in a newline. After an error the reader yields nothing more.
+#[derive(Debug)]
+pub struct Reader<R> {
+    input: R,
+    header: Header,
+    parser: FrameParser,
+    buf: Vec<u8>,
+    line: u64,
+    previous: Option<(f64, u64)>,
+    failed: bool,
+}
+
+impl<R: BufRead> Reader<R> {
+    /// Reads and checks the header.
+    pub fn new(mut input: R) -> Result<Reader<R>, ReadError> {
+        let mut buf = Vec::with_capacity(4096);
+        let mut line = 0u64;
+        let header = loop {
+            match next_line(&mut input, &mut buf, &mut line)? {
+                None => {
+                    return Err(ReadError::new(
+                        line.max(1),
+                        1,
+                        0,
+                        "format",
+                        ErrorKind::Empty,
+                    ))
+                }
+                Some(()) => {
+                    // A byte order mark, as some editors write, is not part of the JSON.
+                    if line == 1 && buf.starts_with(b"\xEF\xBB\xBF") {
+                        buf.drain(..3);
+                    }
+                    if is_blank(&buf) {
+                        continue;
+                    }
+                    break parse_header(&buf, line)?;
+                }
+            }
+        };
+        Ok(Reader {
+            input,
+            parser: FrameParser::new(&header),
+            header,
+            buf,
+            line,
+            previous: None,
+            failed: false,
+        })
+    }
+
+    /// The header.
+    pub fn header(&self) -> &Header {
+        &self.header
+    }
+
+    /// The header, giving up the reader.
+    pub fn into_header(self) -> Header {
+        self.header
+    }
+
+    /// The number of the last line read (1-based; the header's line after [`Reader::new`]).
+    pub fn line(&self) -> u64 {
+        self.line
+    }
+
+    /// Reads the next frame into `frame`, reusing its allocations. Returns `false` at the
+    /// end of the recording.
+    pub fn read_frame(&mut self, frame: &mut Frame) -> Result<bool, ReadError> {
+        if self.failed {
+            return Ok(false);
+        }
+        let result = self.read_frame_inner(frame);
+        if result.is_err() {
+            self.failed = true;
+        }
+        result
+    }
+
+    fn read_frame_inner(&mut self, frame: &mut Frame) -> Result<bool, ReadError> {
+        loop {
+            if next_line(&mut self.input, &mut self.buf, &mut self.line)?.is_none() {
+                return Ok(false);
+            }
+            if !is_blank(&self.buf) {
+                break;
+            }
+        }
+        let line = self.line;
+        let time = self
+            .parser
+            .parse(&self.buf, frame)
+            .map_err(|e| at_line(line, e))?;
+        if let Some((previous, previous_line)) = self.previous {
+            if frame.time <= previous {
+                return Err(ReadError::new(
+                    line,
+                    time.column + 1,
+                    time.width,
+                    "t",
+                    ErrorKind::Time {
+                        time: frame.time,
+                        previous,
+                        previous_line,
+                    },
+                ));
+            }
+        }
+        self.previous = Some((frame.time, line));
+        Ok(true)
+    }
+}
+
+impl<R: BufRead> Iterator for Reader<R> {
+    type Item = Result<Frame, ReadError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let mut frame = Frame::default();
+        match self.read_frame(&mut frame) {
+            Ok(true) => Some(Ok(frame)),
+            Ok(false) => None,
+            Err(e) => Some(Err(e)),
+        }
+    }
+}
+
+fn at_line(line: u64, e: LineError) -> ReadError {
+    ReadError::new(line, e.column + 1, e.width, e.field, e.kind)
+}
+
+fn is_blank(line: &[u8]) -> bool {
+    line.iter().all(|c| matches!(c, b' ' | b'\t'))
+}
+
+/// Reads one line into `buf` without its line ending; `None` at the end of the input.
+fn next_line<R: BufRead>(
+    input: &mut R,
+    buf: &mut Vec<u8>,
+    line: &mut u64,
+) -> Result<Option<()>, ReadError> {
+    buf.clear();
+    let n = input
+        .read_until(b'\n', buf)
+        .map_err(|e| ReadError::new(*line + 1, 1, 0, "", ErrorKind::Io(e)))?;
+    if n == 0 {
+        return Ok(None);
+    }
+    *line += 1;
+    if buf.last() == Some(&b'\n') {
+        buf.pop();
+        if buf.last() == Some(&b'\r') {
+            buf.pop();
+        }
+    }
+    Ok(Some(()))
+}
+
+/// A header error at the first occurrence of `"key"` in the line (or its start).
+fn header_error(text: &[u8], line: u64, field: &str, key: &str, kind: ErrorKind) -> ReadError {
+    let needle = format!("\"{key}\"");
+    let found = text
+        .windows(needle.len())
+        .position(|w| w == needle.as_bytes());
+    match found {
+        Some(p) => ReadError::new(line, p + 1, needle.len(), field, kind),
+        None => ReadError::new(line, 1, 1, field, kind),
+    }
+}
+
+fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
+    let value: Value = serde_json::from_slice(text).map_err(|e| {
+        let kind = if e.is_eof() {
+            ErrorKind::Truncated
+        } else {
+            ErrorKind::Syntax(strip_position(&e))
+        };
+        ReadError::new(line, e.column().max(1), 1, "", kind)
+    })?;
+    let Value::Object(obj) = value else {
+        return Err(ReadError::new(
+            line,
+            1,
+            1,
+            "format",
+            ErrorKind::MissingHeader,
+        ));
+    };
+    let err = |field: &str, key: &str, kind: ErrorKind| header_error(text, line, field, key, kind);
+    let invalid =
+        |field: &str, key: &str, message: String| err(field, key, ErrorKind::Invalid(message));
+    match obj.get("format") {
+        None => {
+            return Err(ReadError::new(
+                line,
+                1,
+                1,
+                "format",
+                ErrorKind::MissingHeader,
+            ))
+        }
+        Some(Value::String(s)) if s == FORMAT_NAME => {}
+        Some(other) => {
+            let found = match other {
+                Value::String(s) => s.clone(),
+                v => v.to_string(),
+            };
+            return Err(err("format", "format", ErrorKind::NotARecording(found)));
+        }
+    }
+    match obj.get("version") {
+        Some(Value::Number(n)) if n.as_u64() == Some(u64::from(FORMAT_VERSION)) => {}
+        Some(v) => return Err(err("version", "version", ErrorKind::Version(v.to_string()))),
+        None => {
+            return Err(invalid(
+                "version",
+                "format",
+                "missing field `version` (the format version, 1)".into(),
+            ))
+        }
+    }
+    for key in obj.keys() {
+        if !matches!(
+            key.as_str(),
+            "format"
+                | "version"
+                | "id"
+                | "participant"
+                | "task"
+                | "frame_rate"
+                | "entities"
+                | "meta"
+        ) {
+            return Err(invalid(
+                key,
+                key,
+                format!(
+                    "unknown field `{key}` (a header has format, version, id, participant, task, \
+                     frame_rate, entities and meta)"
+                ),
+            ));
+        }
+    }
+    let string = |key: &str| -> Result<String, ReadError> {
+        match obj.get(key) {
+            Some(Value::String(s)) => Ok(s.clone()),
+            Some(_) => Err(invalid(key, key, format!("`{key}` must be a string"))),
+            None => Err(invalid(key, "format", format!("missing field `{key}`"))),
+        }
+    };
+    let id = string("id")?;
+    let participant = string("participant")?;
+    let task = string("task")?;
+    let frame_rate = match obj.get("frame_rate") {
+        Some(Value::Number(n)) => n.as_f64().unwrap_or(f64::NAN),
+        Some(_) => {
+            return Err(invalid(
+                "frame_rate",
+                "frame_rate",
+                "`frame_rate` must be a number".into(),
+            ))
+        }
+        None => {
+            return Err(invalid(
+                "frame_rate",
+                "format",
+                "missing field `frame_rate` (nominal frames per second)".into(),
+            ))
+        }
+    };
+    let entities = match obj.get("entities") {
+        Some(Value::Array(list)) => list
+            .iter()
+            .enumerate()
+            .map(|(i, v)| parse_entity(i, v, &err))
+            .collect::<Result<Vec<_>, _>>()?,
+        Some(_) => {
+            return Err(invalid(
+                "entities",
+                "entities",
+                "`entities` must be a list".into(),
+            ))
+        }
+        None => {
+            return Err(invalid(
+                "entities",
+                "format",
+                "missing field `entities`".into(),
+            ))
+        }
+    };
+    let meta = match obj.get("meta") {
+        None => Default::default(),
+        Some(Value::Object(m)) => m
+            .iter()
+            .map(|(k, v)| match v {
+                Value::String(s) => Ok((k.clone(), s.clone())),
+                _ => Err(invalid(
+                    &format!("meta.{k}"),
+                    k,
+                    "meta values must be strings".into(),
+                )),
+            })
+            .collect::<Result<_, _>>()?,
+        Some(_) => {
+            return Err(invalid(
+                "meta",
+                "meta",
+                "`meta` must be an object of strings".into(),
+            ))
+        }
+    };
+    let header = Header {
+        id,
+        participant,
+        task,
+        frame_rate,
+        entities,
+        meta,
+    };
+    check::check_header(&header).map_err(|p| {
+        let key = p
+            .field
+            .rsplit(['.', '['])
+            .next()
+            .unwrap_or("")
+            .trim_end_matches(']');
+        // For a named entity, point at its name rather than the first `"name"`.
+        let key = match p.field.strip_prefix("entities[") {
+            Some(rest) => rest
+                .split(']')
+                .next()
+                .and_then(|i| i.parse::<usize>().ok())
+                .and_then(|i| header.entities.get(i))
+                .map_or(key.to_string(), |e| e.name.clone()),
+            None => key.to_string(),
+        };
+        invalid(&p.field, &key, p.message)
+    })?;
+    Ok(header)
+}
+
+fn parse_entity(
+    i: usize,
+    v: &Value,
+    err: &dyn Fn(&str, &str, ErrorKind) -> ReadError,
+) -> Result<Entity, ReadError> {
+    let at = format!("entities[{i}]");
+    let invalid = |field: &str, key: &str, m: String| err(field, key, ErrorKind::Invalid(m));
+    let Value::Object(obj) = v else {
+        return Err(invalid(
+            &at,
+            "entities",
+            "an entity is an object with name, kind and size".into(),
+        ));
+    };
+    let name = match obj.get("name") {
+        Some(Value::String(s)) => s.clone(),
+        _ => {
+            return Err(invalid(
+                &format!("{at}.name"),
+                "entities",
+                "an entity needs a `name` string".into(),
+            ))
+        }
+    };
+    for key in obj.keys() {
+        if !matches!(key.as_str(), "name" | "kind" | "size" | "pose") {
+            return Err(invalid(
+                &format!("{at}.{key}"),
+                key,
+                format!("unknown field `{key}` (an entity has name, kind, size and pose)"),
+            ));
+        }
+    }
+    let kind = match obj.get("kind") {
+        Some(Value::String(s)) => EntityKind::from_name(s).ok_or_else(|| {
+            invalid(
+                &format!("{at}.kind"),
+                s,
+                format!("unknown kind `{s}` (hand, cube, table or other)"),
+            )
+        })?,
+        _ => {
+            return Err(invalid(
+                &format!("{at}.kind"),
+                &name,
+                "an entity needs a `kind`: hand, cube, table or other".into(),
+            ))
+        }
+    };
+    let size = numbers::<3>(obj.get("size"), &format!("{at}.size"), &name, &invalid)?;
+    let fixed = match obj.get("pose") {
+        None => None,
+        Some(Value::Object(p)) => {
+            let pos = numbers::<3>(p.get("pos"), &format!("{at}.pose.pos"), &name, &invalid)?;
+            let rot = numbers::<4>(p.get("rot"), &format!("{at}.pose.rot"), &name, &invalid)?;
+            if let Some(k) = p.keys().find(|k| !matches!(k.as_str(), "pos" | "rot")) {
+                return Err(invalid(
+                    &format!("{at}.pose.{k}"),
+                    k,
+                    format!("unknown field `{k}` (a pose has pos and rot)"),
+                ));
+            }
+            Some(Pose {
+                position: Vec3::from_array(pos),
+                orientation: Quaternion::from_array(rot),
+            })
+        }
+        Some(_) => {
+            return Err(invalid(
+                &format!("{at}.pose"),
+                "pose",
+                "`pose` is an object with pos and rot".into(),
+            ))
+        }
+    };
+    Ok(Entity {
+        name,
+        kind,
+        size: Vec3::from_array(size),
+        fixed,
+    })
+}
+
+fn numbers<const N: usize>(
+    v: Option<&Value>,
+    field: &str,
+    near: &str,
+    invalid: &dyn Fn(&str, &str, String) -> ReadError,
+) -> Result<[f32; N], ReadError> {
+    let bad = || {
+        invalid(
+            field,
+            near,
+            format!("`{field}` must be a list of {N} numbers"),
+        )
+    };
+    let Some(Value::Array(list)) = v else {
+        return Err(bad());
+    };
+    if list.len() != N {
+        return Err(bad());
+    }
+    let mut out = [0.0f32; N];
+    for (slot, v) in out.iter_mut().zip(list) {
+        *slot = v.as_f64().ok_or_else(bad)? as f32;
+        if !slot.is_finite() {
+            return Err(invalid(field, near, format!("`{field}` is not finite")));
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HEADER: &str = r#"{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":90,"entities":[{"name":"h","kind":"hand","size":[0.1,0.1,0.1]},{"name":"c","kind":"cube","size":[0.05,0.05,0.05]},{"name":"table","kind":"table","size":[1,1,0.7],"pose":{"pos":[0,0,0.35],"rot":[0,0,0,1]}}]}"#;
+
+    fn read(frames: &str) -> Result<Vec<Frame>, ReadError> {
+        let text = format!("{HEADER}\n{frames}");
+        Reader::new(text.as_bytes())?.collect()
+    }
+
+    fn error_of(frames: &str) -> ReadError {
+        read(frames).unwrap_err()
+    }
+
+    const H: &str = r#""h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0.5}"#;
+
+    #[test]
+    fn reads_frames_with_every_field() {
+        let f = read(&format!(
+            "{{\"t\":0,\"entities\":{{{H},\"c\":{{\"pos\":[1,2,3],\"rot\":[0,0,0.7071068,0.7071068],\"vel\":[0.1,0,0]}}}},\"contacts\":[[\"c\",\"table\"]]}}\n\r\n\
+             {{\"t\":0.5,\"entities\":{{\"c\":{{\"pos\":[1,2,3],\"rot\":[0,0,0,1]}},\"h\":{{\"pos\":[0,0,1],\"rot\":[0,0,0,1],\"grip\":1,\"holding\":\"c\"}}}}}}"
+        ))
+        .unwrap();
+        assert_eq!(f.len(), 2);
+        assert_eq!(f[0].contacts.len(), 1);
+        assert_eq!(
+            f[0].states[1].unwrap().velocity,
+            Some(Vec3::new(0.1, 0.0, 0.0))
+        );
+        assert_eq!(f[1].states[0].unwrap().holding, Some(crate::EntityId(1)));
+        assert!(f[1].states[2].is_none());
+    }
+
+    #[test]
+    fn errors_name_line_and_field() {
+        let cases: &[(&str, &str, &str)] = &[
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,NaN,1],"rot":[0,0,0,1],"grip":0.5}}}"#,
+                "entities.h.pos[1]",
+                "not-finite",
+            ),
+            (
+                r#"{"t":0,"entities":{"x":{}}}"#,
+                "entities.x",
+                "unknown-entity",
+            ),
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":1.5}}}"#,
+                "entities.h.grip",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1]}}}"#,
+                "entities.h",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,2],"grip":0}}}"#,
+                "entities.h.rot",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"table":{}}}"#,
+                "entities.table",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"c":{"pos":[0,0],"rot":[0,0,0,1]}}}"#,
+                "entities.c.pos",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0}}}"#,
+                "entities.c.grip",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"h"}}}"#,
+                "entities.h.holding",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"q"}}}"#,
+                "entities.h.holding",
+                "unknown-entity",
+            ),
+            (
+                r#"{"t":0,"contacts":[["c","c"]]}"#,
+                "contacts[0]",
+                "invalid",
+            ),
+            (
+                r#"{"t":0,"contacts":[["c","z"]]}"#,
+                "contacts[0][1]",
+                "unknown-entity",
+            ),
+            (
+                r#"{"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1]}"#,
+                "entities",
+                "truncated",
+            ),
+            (
+                r#"{"t":0,"entities":{"c":{"pos":[0,0,1"#,
+                "entities.c.pos",
+                "truncated",
+            ),
+            (r#"{"t":0,"velocity":1}"#, "velocity", "invalid"),
+            (r#"{"entities":{}}"#, "t", "invalid"),
+            (r#"{"t":0} x"#, "", "syntax"),
+            ("{\"t\":1}\n{\"t\":1}", "t", "time"),
+            ("{\"t\":1}\n{\"t\":Infinity}", "t", "not-finite"),
+        ];
+        for (frames, field, code) in cases {
+            let e = error_of(frames);
+            assert_eq!(
+                (e.field.as_str(), e.kind.code()),
+                (*field, *code),
+                "{frames}: {e}"
+            );
+            assert!(e.line >= 2, "{frames}: {e}");
+        }
+        let e = error_of("{\"t\":2}\n\n{\"t\":1.5}");
+        assert_eq!(e.line, 4);
+        assert_eq!(e.column, 6);
+        assert_eq!(
+            e.to_string(),
+            "line 4, field `t`: time 1.5 s is not after the previous frame's 2 s (line 2)"
+        );
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_skipped() {
+        let text = format!("\u{feff}{HEADER}\n{{\"t\":0}}\n");
+        let frames: Vec<Frame> = Reader::new(text.as_bytes())
+            .unwrap()
+            .map(|f| f.unwrap())
+            .collect();
+        assert_eq!(frames.len(), 1);
+    }
+
+    #[test]
+    fn header_errors() {
+        let cases: &[(&str, &str, &str)] = &[
+            ("", "format", "empty"),
+            ("\n\n", "format", "empty"),
+            (r#"{"t":0}"#, "format", "missing-header"),
+            (r#"{"format":"other","version":1}"#, "format", "format"),
+            (
+                r#"{"format":"demoplan-recording","version":2}"#,
+                "version",
+                "version",
+            ),
+            (
+                r#"{"format":"demoplan-recording","version":1,"id":"r""#,
+                "",
+                "truncated",
+            ),
+            (
+                r#"{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":0,"entities":[]}"#,
+                "frame_rate",
+                "invalid",
+            ),
+            (
+                r#"{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":9,"entities":[{"name":"a","kind":"robot","size":[1,1,1]}]}"#,
+                "entities[0].kind",
+                "invalid",
+            ),
+            (
+                r#"{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":9,"entities":[{"name":"a","kind":"cube","size":[1,1,1]},{"name":"A","kind":"cube","size":[1,1,1]}]}"#,
+                "entities[1].name",
+                "invalid",
+            ),
+        ];
+        for (text, field, code) in cases {
+            let e = Reader::new(text.as_bytes()).unwrap_err();
+            assert_eq!(
+                (e.field.as_str(), e.kind.code()),
+                (*field, *code),
+                "{text}: {e}"
+            );
+        }
+    }
+}

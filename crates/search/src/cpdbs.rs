@@ -1,0 +1,538 @@
+//! The canonical heuristic over a collection of pattern databases (Haslum, Botea,
+//! Helmert, Bonet and Koenig, AAAI 2007).
+//!
+//! Two patterns are *additive* if no operator has effects on variables of both: then
+//! every operator's cost is counted by at most one of their projections, and the sum of
+//! their values is admissible. The canonical heuristic is the maximum, over the maximal
+//! cliques of the compatibility graph (patterns as vertices, edges between additive
+//! patterns), of the sum of the clique's values; a dead end in any database makes the
+//! state a dead end. Cliques are found once per collection (Bron and Kerbosch with
+//! Tomita's pivot, on bit sets), and optionally pruned by dominance (Pommerening, Röger
+//! and Helmert, IJCAI 2013): a clique is dropped if every one of its patterns is a subset
+//! of a pattern of another clique, and databases left in no clique are dropped.
+
+use std::time::{Duration, Instant};
+
+use task::{Task, VarId};
+
+use crate::heuristic::Heuristic;
+use crate::pdb::PatternDatabase;
+
+const DEAD: u32 = u32::MAX;
+
+/// Answers "are these two patterns additive?" for one task.
+#[derive(Debug, Clone)]
+pub(crate) struct Additivity {
+    /// For each variable, the variables that some operator has effects on together with
+    /// it, itself included if any operator affects it: `together[start[v]..start[v + 1]]`,
+    /// sorted.
+    start: Vec<u32>,
+    together: Vec<u32>,
+}
+
+impl Additivity {
+    /// O(sum over operators of effects squared).
+    pub(crate) fn new(task: &Task) -> Additivity {
+        let n = task.variables.len();
+        let mut lists: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for op in &task.operators {
+            for a in &op.effects {
+                lists[a.var.index()].extend(op.effects.iter().map(|b| b.var.0));
+            }
+        }
+        let mut start = Vec::with_capacity(n + 1);
+        let mut together = Vec::new();
+        start.push(0);
+        for mut list in lists {
+            list.sort_unstable();
+            list.dedup();
+            together.extend_from_slice(&list);
+            start.push(together.len() as u32);
+        }
+        Additivity { start, together }
+    }
+
+    /// True if no operator has effects on a variable of `a` and one of `b` (both sorted).
+    /// O(|a| * affected-together list * log |b|).
+    pub(crate) fn additive(&self, a: &[VarId], b: &[VarId]) -> bool {
+        a.iter().all(|v| {
+            let list = &self.together[self.start[v.index()] as usize..self.start[v.index() + 1] as usize];
+            list.iter().all(|&w| b.binary_search(&VarId(w)).is_err())
+        })
+    }
+}
+
+/// The maximal cliques of the graph on `0..n` whose adjacency rows are the bit sets
+/// `adjacent[v]` (`n` bits each, symmetric, no loops), each sorted, in a deterministic
+/// order. Bron–Kerbosch with Tomita's pivot: O(3^(n/3)) in the worst case, fast on the
+/// sparse or nearly complete graphs pattern collections give.
+pub(crate) fn maximal_cliques(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> {
+    let words = n.div_ceil(64);
+    let mut candidates = vec![0u64; words];
+    for v in 0..n {
+        candidates[v / 64] |= 1 << (v % 64);
+    }
+    let mut out = Vec::new();
+    let mut clique = Vec::new();
+    expand(adjacent, &mut clique, candidates, vec![0u64; words], &mut out);
+    out
+}
+
+fn bits(set: &[u64]) -> impl Iterator<Item = usize> + '_ {
+    set.iter().enumerate().flat_map(|(w, &word)| {
+        let mut rest = word;
+        std::iter::from_fn(move || {
+            if rest == 0 {
+                return None;
+            }
+            let bit = rest.trailing_zeros() as usize;
+            rest &= rest - 1;
+            Some(w * 64 + bit)
+        })
+    })
+}
+
+fn count_common(a: &[u64], b: &[u64]) -> u32 {
+    a.iter().zip(b).map(|(x, y)| (x & y).count_ones()).sum()
+}
+
+/// One level of Bron–Kerbosch: `clique` is R, `candidates` P, `excluded` X. The depth
+/// is at most the size of a clique.
+fn expand(
+    adjacent: &[Vec<u64>],
+    clique: &mut Vec<u32>,
+    mut candidates: Vec<u64>,
+    mut excluded: Vec<u64>,
+    out: &mut Vec<Vec<u32>>,
+) {
+    if candidates.iter().all(|&w| w == 0) {
+        if excluded.iter().all(|&w| w == 0) {
+            let mut c = clique.clone();
+            c.sort_unstable();
+            out.push(c);
+        }
+        return;
+    }
+    // Pivot: the vertex of P or X with the most neighbours in P.
+    let pivot = bits(&candidates)
+        .chain(bits(&excluded))
+        .max_by_key(|&u| (count_common(&adjacent[u], &candidates), std::cmp::Reverse(u)))
+        .unwrap_or(0);
+    let branch: Vec<usize> = bits(&candidates)
+        .filter(|&v| adjacent[pivot][v / 64] >> (v % 64) & 1 == 0)
+        .collect();
+    for v in branch {
+        let row = &adjacent[v];
+        let p: Vec<u64> = candidates.iter().zip(row).map(|(a, b)| a & b).collect();
+        let x: Vec<u64> = excluded.iter().zip(row).map(|(a, b)| a & b).collect();
+        clique.push(v as u32);
+        expand(adjacent, clique, p, x, out);
+        clique.pop();
+        candidates[v / 64] &= !(1 << (v % 64));
+        excluded[v / 64] |= 1 << (v % 64);
+    }
+}
+
+/// The maximal additive subsets of `patterns`: the maximal cliques of their
+/// compatibility graph.
+pub(crate) fn additive_cliques(additivity: &Additivity, patterns: &[&[VarId]]) -> Vec<Vec<u32>> {
+    let n = patterns.len();
+    let words = n.div_ceil(64);
+    let mut adjacent = vec![vec![0u64; words]; n];
+    for a in 0..n {
+        for b in a + 1..n {
+            if additivity.additive(patterns[a], patterns[b]) {
+                adjacent[a][b / 64] |= 1 << (b % 64);
+                adjacent[b][a / 64] |= 1 << (a % 64);
+            }
+        }
+    }
+    maximal_cliques(n, &adjacent)
+}
+
+/// The *interesting* patterns (Pommerening, Röger and Helmert, IJCAI 2013) of at most
+/// `max_size` variables, for `max_size` 1 or 2 (larger sizes are treated as 2): patterns
+/// whose causal graph is weakly connected and whose every variable is a goal variable or
+/// reaches one of the pattern by precondition-to-effect arcs. Of one variable: the goal
+/// variables. Of two: two goal variables joined by an arc (precondition to effect, or two
+/// effects of one operator), and a goal variable with one of its precondition-to-effect
+/// predecessors. Singletons first, then pairs, each sorted. O(task size + pairs).
+pub(crate) fn systematic_patterns(task: &Task, max_size: usize) -> Vec<Vec<u32>> {
+    let n = task.variables.len();
+    let mut is_goal = vec![false; n];
+    for f in &task.goal {
+        is_goal[f.var.index()] = true;
+    }
+    let mut out: Vec<Vec<u32>> = (0..n as u32).filter(|&v| is_goal[v as usize]).map(|v| vec![v]).collect();
+    if max_size < 2 {
+        return out;
+    }
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    for op in &task.operators {
+        for e in &op.effects {
+            if !is_goal[e.var.index()] {
+                continue;
+            }
+            // Precondition-to-effect arcs into a goal variable.
+            for p in &op.preconditions {
+                if p.var != e.var {
+                    pairs.push((p.var.0.min(e.var.0), p.var.0.max(e.var.0)));
+                }
+            }
+            // Effect-to-effect arcs between two goal variables.
+            for other in &op.effects {
+                if other.var != e.var && is_goal[other.var.index()] {
+                    pairs.push((other.var.0.min(e.var.0), other.var.0.max(e.var.0)));
+                }
+            }
+        }
+    }
+    pairs.sort_unstable();
+    pairs.dedup();
+    out.extend(pairs.into_iter().map(|(a, b)| vec![a, b]));
+    out
+}
+
+/// What building a pattern-database heuristic did, for logs.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct PdbStatistics {
+    /// Pattern databases of the heuristic (after dominance pruning).
+    pub patterns: usize,
+    /// Abstract states over all its databases.
+    pub total_size: u64,
+    /// Bytes of all its distance tables.
+    pub memory_bytes: u64,
+    /// Maximal additive subsets (cliques) it maximises over (after pruning).
+    pub cliques: usize,
+    /// Cliques dropped by dominance pruning.
+    pub pruned_cliques: usize,
+    /// Databases dropped by dominance pruning (in no remaining clique).
+    pub pruned_patterns: usize,
+    /// Time of the dominance pruning.
+    pub dominance_pruning_time: Duration,
+    /// Time to build the whole heuristic (pattern generation, databases, cliques).
+    pub total_time: Duration,
+    /// The hill climbing, for `ipdb()`.
+    pub hill_climbing: Option<crate::ipdb::HillClimbingStatistics>,
+}
+
+/// The canonical heuristic over a collection of pattern databases; see the module
+/// documentation. Admissible and consistent.
+///
+/// Each evaluation looks every database up once, then sums per clique: O(sum of pattern
+/// sizes + sum of clique sizes), no allocation.
+#[derive(Debug, Clone)]
+pub struct CanonicalPdbs {
+    name: &'static str,
+    pdbs: Vec<PatternDatabase>,
+    /// Members of clique `c`: `members[clique_start[c]..clique_start[c + 1]]`.
+    clique_start: Vec<u32>,
+    members: Vec<u32>,
+    values: Vec<u32>,
+    statistics: PdbStatistics,
+}
+
+impl CanonicalPdbs {
+    /// The canonical heuristic over `pdbs` (databases of one task; duplicate patterns
+    /// are dropped), named `name` in logs, with dominance pruning if
+    /// `dominance_pruning` is given (its time limit; the pruning stops when it passes).
+    pub fn new(
+        task: &Task,
+        mut pdbs: Vec<PatternDatabase>,
+        dominance_pruning: Option<Duration>,
+        name: &'static str,
+    ) -> CanonicalPdbs {
+        let start = Instant::now();
+        let mut seen = rustc_hash::FxHashSet::default();
+        pdbs.retain(|p| seen.insert(p.pattern().to_vec()));
+        let additivity = Additivity::new(task);
+        let patterns: Vec<&[VarId]> = pdbs.iter().map(|p| p.pattern()).collect();
+        let mut cliques = additive_cliques(&additivity, &patterns);
+        let mut statistics = PdbStatistics::default();
+        if let Some(limit) = dominance_pruning {
+            let before = cliques.len();
+            cliques = prune_dominated(&patterns, cliques, start + limit);
+            statistics.pruned_cliques = before - cliques.len();
+            statistics.dominance_pruning_time = start.elapsed();
+            // Drop the databases no clique uses, renumbering the cliques' members.
+            let mut used = vec![false; pdbs.len()];
+            for c in &cliques {
+                for &m in c {
+                    used[m as usize] = true;
+                }
+            }
+            let mut new_index = vec![u32::MAX; pdbs.len()];
+            let mut next = 0;
+            for (i, &u) in used.iter().enumerate() {
+                if u {
+                    new_index[i] = next;
+                    next += 1;
+                }
+            }
+            let mut i = 0;
+            pdbs.retain(|_| {
+                i += 1;
+                used[i - 1]
+            });
+            for c in &mut cliques {
+                for m in c.iter_mut() {
+                    *m = new_index[*m as usize];
+                }
+            }
+            statistics.pruned_patterns = used.len() - pdbs.len();
+        }
+        let mut clique_start = vec![0u32];
+        let mut members = Vec::new();
+        for c in &cliques {
+            members.extend_from_slice(c);
+            clique_start.push(members.len() as u32);
+        }
+        statistics.patterns = pdbs.len();
+        statistics.total_size = pdbs.iter().map(|p| p.size() as u64).sum();
+        statistics.memory_bytes = pdbs.iter().map(|p| p.memory_bytes() as u64).sum();
+        statistics.cliques = cliques.len();
+        statistics.total_time = start.elapsed();
+        CanonicalPdbs {
+            name,
+            values: vec![0; pdbs.len()],
+            pdbs,
+            clique_start,
+            members,
+            statistics,
+        }
+    }
+
+    /// The pattern databases.
+    pub fn pdbs(&self) -> &[PatternDatabase] {
+        &self.pdbs
+    }
+
+    /// The cliques (maximal additive subsets), as indices into [`pdbs`](Self::pdbs).
+    pub fn cliques(&self) -> impl Iterator<Item = &[u32]> + '_ {
+        self.clique_start
+            .windows(2)
+            .map(|w| &self.members[w[0] as usize..w[1] as usize])
+    }
+
+    /// What building it did.
+    pub fn statistics(&self) -> &PdbStatistics {
+        &self.statistics
+    }
+
+    pub(crate) fn statistics_mut(&mut self) -> &mut PdbStatistics {
+        &mut self.statistics
+    }
+}
+
+impl Heuristic for CanonicalPdbs {
+    fn name(&self) -> &str {
+        self.name
+    }
+
+    #[inline]
+    fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+        for (value, pdb) in self.values.iter_mut().zip(&self.pdbs) {
+            *value = pdb.raw(state);
+            if *value == DEAD {
+                return None;
+            }
+        }
+        let mut best = 0u64;
+        for w in self.clique_start.windows(2) {
+            let sum: u64 = self.members[w[0] as usize..w[1] as usize]
+                .iter()
+                .map(|&m| u64::from(self.values[m as usize]))
+                .sum();
+            best = best.max(sum);
+        }
+        Some(best)
+    }
+
+    fn pdb_statistics(&self) -> Option<&PdbStatistics> {
+        Some(&self.statistics)
+    }
+}
+
+/// The cliques not dominated by another: clique `a` is dominated by `b` if every pattern
+/// of `a` is a subset of some pattern of `b` (then `b`'s sum is at least `a`'s, since
+/// additive patterns inside one superpattern sum to at most its value). Stops pruning at
+/// `deadline`. O(patterns^2 * pattern size + cliques^2 * clique size * patterns / 64).
+fn prune_dominated(
+    patterns: &[&[VarId]],
+    cliques: Vec<Vec<u32>>,
+    deadline: Instant,
+) -> Vec<Vec<u32>> {
+    let n = patterns.len();
+    let words = n.div_ceil(64);
+    let subset = |a: &[VarId], b: &[VarId]| a.iter().all(|v| b.binary_search(v).is_ok());
+    // supersets[p]: the patterns containing pattern p.
+    let mut supersets = vec![vec![0u64; words]; n];
+    for p in 0..n {
+        for q in 0..n {
+            if subset(patterns[p], patterns[q]) {
+                supersets[p][q / 64] |= 1 << (q % 64);
+            }
+        }
+    }
+    let sets: Vec<Vec<u64>> = cliques
+        .iter()
+        .map(|c| {
+            let mut set = vec![0u64; words];
+            for &m in c {
+                set[m as usize / 64] |= 1 << (m % 64);
+            }
+            set
+        })
+        .collect();
+    let mut pruned = vec![false; cliques.len()];
+    for a in 0..cliques.len() {
+        if Instant::now() >= deadline {
+            break;
+        }
+        pruned[a] = (0..cliques.len()).any(|b| {
+            b != a
+                && !pruned[b]
+                && cliques[a].iter().all(|&p| {
+                    supersets[p as usize]
+                        .iter()
+                        .zip(&sets[b])
+                        .any(|(x, y)| x & y != 0)
+                })
+        });
+    }
+    cliques
+        .into_iter()
+        .zip(pruned)
+        .filter(|(_, p)| !p)
+        .map(|(c, _)| c)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn graph(n: usize, edges: &[(usize, usize)]) -> Vec<Vec<u64>> {
+        let mut adjacent = vec![vec![0u64; n.div_ceil(64)]; n];
+        for &(a, b) in edges {
+            adjacent[a][b / 64] |= 1 << (b % 64);
+            adjacent[b][a / 64] |= 1 << (a % 64);
+        }
+        adjacent
+    }
+
+    /// Maximal cliques by brute force over all subsets.
+    fn brute_force(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> {
+        let edge = |a: usize, b: usize| adjacent[a][b / 64] >> (b % 64) & 1 == 1;
+        let is_clique = |s: u32| {
+            (0..n).all(|a| (0..n).all(|b| a == b || s >> a & 1 == 0 || s >> b & 1 == 0 || edge(a, b)))
+        };
+        let mut out: Vec<Vec<u32>> = (0..1u32 << n)
+            .filter(|&s| is_clique(s) && (0..n).all(|v| s >> v & 1 == 1 || !is_clique(s | 1 << v)))
+            .map(|s| (0..n as u32).filter(|&v| s >> v & 1 == 1).collect())
+            .collect();
+        out.sort();
+        out
+    }
+
+    #[test]
+    fn cliques_match_brute_force() {
+        let mut seed = 5u64;
+        for round in 0..300 {
+            let n = round % 11;
+            let mut edges = Vec::new();
+            for a in 0..n {
+                for b in a + 1..n {
+                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    if (seed >> 33) % 100 < (round as u64 * 7) % 100 {
+                        edges.push((a, b));
+                    }
+                }
+            }
+            let adjacent = graph(n, &edges);
+            let mut got = maximal_cliques(n, &adjacent);
+            got.sort();
+            assert_eq!(got, brute_force(n, &adjacent), "{n} {edges:?}");
+        }
+        // No vertices: one empty clique (the heuristic is then 0).
+        assert_eq!(maximal_cliques(0, &[]), vec![Vec::<u32>::new()]);
+        // A 70-vertex complete graph crosses a word boundary.
+        let edges: Vec<_> = (0..70).flat_map(|a| (a + 1..70).map(move |b| (a, b))).collect();
+        assert_eq!(maximal_cliques(70, &graph(70, &edges)), vec![(0..70).collect::<Vec<u32>>()]);
+    }
+
+    /// Variables a, b, c, d, e; goal a, b, c. `ab` changes a and b, `c-from-d` changes c
+    /// given d, `e` changes e.
+    fn task() -> Task {
+        use task::{Fact, Operator, Variable};
+        let fact = |v: u32| Fact::new(VarId(v), 0);
+        let op = |name: &str, pre: Vec<Fact>, eff: Vec<Fact>| Operator {
+            name: name.into(),
+            preconditions: pre,
+            effects: eff,
+            cost: 1,
+        };
+        Task {
+            variables: ["a", "b", "c", "d", "e"].iter().map(|n| Variable::binary(n)).collect(),
+            mutexes: vec![],
+            initial_state: vec![1; 5],
+            goal: vec![fact(0), fact(1), fact(2)],
+            operators: vec![
+                op("ab", vec![], vec![fact(0), fact(1)]),
+                op("c-from-d", vec![fact(3)], vec![fact(2)]),
+                op("e", vec![fact(2)], vec![fact(4)]),
+            ],
+            use_costs: false,
+        }
+    }
+
+    #[test]
+    fn additivity_and_systematic_patterns() {
+        let t = task();
+        let additivity = Additivity::new(&t);
+        let p = |vars: &[u32]| vars.iter().map(|&v| VarId(v)).collect::<Vec<_>>();
+        assert!(!additivity.additive(&p(&[0]), &p(&[1])));
+        assert!(additivity.additive(&p(&[0]), &p(&[2, 3])));
+        // A variable no operator changes is additive with itself.
+        assert!(additivity.additive(&p(&[3]), &p(&[3])));
+        assert!(!additivity.additive(&p(&[2]), &p(&[2, 4])));
+        assert_eq!(systematic_patterns(&t, 1), [vec![0], vec![1], vec![2]]);
+        // Pairs: a and b (changed together), c and its precondition d; not c and e (e is
+        // no goal, and c is no precondition-to-effect descendant of e).
+        assert_eq!(
+            systematic_patterns(&t, 2),
+            [vec![0], vec![1], vec![2], vec![0, 1], vec![2, 3]]
+        );
+        let pdbs = crate::pdb::build_collection(&t, &systematic_patterns(&t, 2)).unwrap();
+        let mut h = CanonicalPdbs::new(&t, pdbs, None, "cpdbs");
+        // Cliques: {a, c}, {a, cd}, {b, c}, {b, cd}, {ab, c}, {ab, cd}.
+        assert_eq!(h.cliques().count(), 6);
+        // d never changes: without it c is out of reach.
+        assert_eq!(h.evaluate(&[1, 1, 1, 1, 1]), None);
+        assert_eq!(h.evaluate(&[1, 1, 1, 0, 1]), Some(2));
+        assert_eq!(h.evaluate(&[0, 0, 1, 0, 1]), Some(1));
+        let mut pruned = CanonicalPdbs::new(&t, h.pdbs().to_vec(), Some(Duration::from_secs(9)), "cpdbs");
+        // Only {ab, cd} is left, renumbered.
+        assert_eq!(pruned.cliques().collect::<Vec<_>>(), [&[0u32, 1][..]]);
+        let left: Vec<&[VarId]> = pruned.pdbs().iter().map(|p| p.pattern()).collect();
+        assert_eq!(left, [&p(&[0, 1])[..], &p(&[2, 3])[..]]);
+        let s = pruned.statistics();
+        assert_eq!((s.patterns, s.cliques, s.pruned_cliques, s.pruned_patterns), (2, 1, 5, 3));
+        assert_eq!(s.total_size, 8);
+        assert_eq!(pruned.evaluate(&[1, 1, 1, 0, 1]), Some(2));
+        assert_eq!(pruned.name(), "cpdbs");
+    }
+
+    #[test]
+    fn dominated_cliques_are_pruned() {
+        let p = |vars: &[u32]| vars.iter().map(|&v| VarId(v)).collect::<Vec<_>>();
+        let patterns = [p(&[0]), p(&[1]), p(&[0, 1]), p(&[2])];
+        let refs: Vec<&[VarId]> = patterns.iter().map(|p| p.as_slice()).collect();
+        // {0}, {1} additive with each other and {2}; {0, 1} additive with {2}.
+        let cliques = vec![vec![0, 1, 3], vec![2, 3]];
+        let far = Instant::now() + Duration::from_secs(60);
+        assert_eq!(prune_dominated(&refs, cliques.clone(), far), vec![vec![2, 3]]);
+        let cliques = vec![vec![0, 3], vec![1]];
+        assert_eq!(prune_dominated(&refs, cliques.clone(), far), cliques);
+    }
+}

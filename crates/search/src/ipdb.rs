@@ -1,0 +1,1015 @@
+//! iPDB: a pattern collection chosen by hill climbing for the canonical heuristic (Haslum,
+//! Botea, Helmert, Bonet and Koenig, AAAI 2007), as Fast Downward's `ipdb()` does it.
+//!
+//! The climb starts with one pattern per goal variable. Its neighbours are the *candidate*
+//! patterns: a pattern `P` of the collection plus one variable that is a causal-graph
+//! predecessor (an operator has a precondition or an effect on it and an effect on the
+//! other) of a variable of `P`, whose database has at most `pdb_max_size` abstract states.
+//! Every candidate's database is built once, when the candidate is generated, and kept
+//! until it is chosen or rejected. Each iteration:
+//!
+//! 1. samples `num_samples` states by random walks from the initial state. Each walk's
+//!    length is binomially distributed with `n = 4 * steps` and `p = 1/2` (mean twice the
+//!    estimated number of solution steps, `steps = round(h(initial) / average operator
+//!    cost)` with the current collection's h), and a walk that reaches a state without
+//!    successors or a dead end of the current collection restarts at the initial state;
+//! 2. counts, for every candidate, the samples whose canonical value would rise with the
+//!    candidate added: a sample `s` improves if the candidate's database calls it a dead
+//!    end, or if for some maximal additive subset `C` of the current collection the sum
+//!    over the patterns of `C` additive with the candidate, plus the candidate's value,
+//!    exceeds the current value of `s` (the counting approximation of the paper);
+//! 3. adds the candidate with the most improved samples (the first of equals) if it
+//!    improves at least `min_improvement` of them, and generates the candidates of the new
+//!    pattern; otherwise the climb ends.
+//!
+//! Candidates whose database would take the collection beyond `collection_max_size`
+//! abstract states are rejected. The climb also ends when the initial state is a dead end,
+//! at `max_time`, at the caller's deadline or memory limit, or once
+//! `max_generated_patterns` candidates were generated. The per-sample maximum over the
+//! additive subsets depends only on which collection patterns are additive with the
+//! candidate, so it is computed once per distinct answer and iteration.
+//!
+//! The default options are Fast Downward's (`pdb_max_size=2000000`,
+//! `collection_max_size=20000000`, `num_samples=1000`, `min_improvement=10`, no time
+//! limit); the random walks use a fixed-seed generator (SplitMix64), so a run is
+//! deterministic: the same task and options give the same collection.
+
+use std::time::{Duration, Instant};
+
+use rustc_hash::{FxHashMap, FxHashSet};
+use task::{OpId, Task, VarId};
+
+use crate::astar::SearchLimits;
+use crate::cpdbs::{additive_cliques, Additivity, CanonicalPdbs};
+use crate::pdb::{pattern_size, PatternDatabase, PatternError, PdbBuilder};
+
+const DEAD: u32 = u32::MAX;
+
+/// The options of `ipdb(...)`, with Fast Downward's defaults.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct IpdbConfig {
+    /// Largest database of a candidate pattern, in abstract states.
+    pub pdb_max_size: u64,
+    /// Largest total of the collection's databases, in abstract states.
+    pub collection_max_size: u64,
+    /// States sampled per iteration.
+    pub num_samples: u32,
+    /// Fewest improved samples for a candidate to be added.
+    pub min_improvement: u32,
+    /// Time limit of the climb (`None`: unlimited).
+    pub max_time: Option<Duration>,
+    /// Seed of the random walks.
+    pub random_seed: u64,
+    /// The climb ends once this many candidate patterns were generated (`None`: no limit).
+    pub max_generated_patterns: Option<u64>,
+    /// Time limit of the dominance pruning of cliques after the climb (`None`: unlimited;
+    /// zero: no pruning).
+    pub max_time_dominance_pruning: Option<Duration>,
+}
+
+impl Default for IpdbConfig {
+    fn default() -> IpdbConfig {
+        IpdbConfig {
+            pdb_max_size: 2_000_000,
+            collection_max_size: 20_000_000,
+            num_samples: 1000,
+            min_improvement: 10,
+            max_time: None,
+            random_seed: 0,
+            max_generated_patterns: None,
+            max_time_dominance_pruning: None,
+        }
+    }
+}
+
+/// Why the hill climbing ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ClimbEnd {
+    /// No candidate improved `min_improvement` samples (or none was left).
+    #[default]
+    Converged,
+    /// The initial state is a dead end of the collection.
+    InitialDeadEnd,
+    /// `max_time` or the caller's deadline passed.
+    TimeLimit,
+    /// The caller's memory limit was exceeded.
+    MemoryLimit,
+    /// `max_generated_patterns` candidates were generated.
+    GeneratedPatternsLimit,
+}
+
+/// What the hill climbing did, in Fast Downward's terms, and where its time went.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct HillClimbingStatistics {
+    /// Iterations begun ("Hill climbing iterations").
+    pub iterations: u32,
+    /// Candidate patterns generated, each with its database.
+    pub generated_patterns: u64,
+    /// Candidates dropped because the collection had no room left for them.
+    pub rejected_patterns: u64,
+    /// The largest database generated, in abstract states.
+    pub max_pdb_size: u64,
+    /// Patterns in the collection at the end of the climb.
+    pub patterns: usize,
+    /// Abstract states over the collection's databases at the end of the climb.
+    pub total_size: u64,
+    /// Why it ended.
+    pub end: ClimbEnd,
+    /// Wall-clock time of the climb.
+    pub time: Duration,
+    /// Of which building databases (initial patterns and candidates).
+    pub pdb_time: Duration,
+    /// Of which sampling states by random walks.
+    pub sampling_time: Duration,
+    /// Of which counting improved samples (and the collection's values on samples).
+    pub evaluation_time: Duration,
+}
+
+/// The `ipdb()` heuristic: the canonical heuristic over the collection the hill climbing
+/// finds (see the module documentation), with dominance pruning; its
+/// [`statistics`](CanonicalPdbs::statistics) include the climb's. The climb stops early
+/// at `limits.deadline` or when memory use exceeds `limits.memory_limit_bytes`.
+pub fn ipdb(
+    task: &Task,
+    config: &IpdbConfig,
+    limits: &SearchLimits,
+) -> Result<CanonicalPdbs, PatternError> {
+    let start = Instant::now();
+    task.validate()?;
+    let (collection, climb) = hill_climbing(task, config, limits);
+    let pruning = match config.max_time_dominance_pruning {
+        Some(t) if t.is_zero() => None,
+        Some(t) => Some(t),
+        None => Some(Duration::MAX / 4),
+    };
+    let mut heuristic = CanonicalPdbs::new(task, collection, pruning, "ipdb");
+    let statistics = heuristic.statistics_mut();
+    statistics.hill_climbing = Some(climb);
+    statistics.total_time = start.elapsed();
+    Ok(heuristic)
+}
+
+/// A candidate pattern with its database, and which collection patterns it is additive
+/// with (extended as the collection grows).
+#[derive(Debug)]
+struct Candidate {
+    pdb: PatternDatabase,
+    additive: Vec<bool>,
+}
+
+/// Runs the climb on a valid task; returns the collection and what it did.
+pub(crate) fn hill_climbing(
+    task: &Task,
+    config: &IpdbConfig,
+    limits: &SearchLimits,
+) -> (Vec<PatternDatabase>, HillClimbingStatistics) {
+    let start = Instant::now();
+    let own_deadline = config.max_time.and_then(|t| start.checked_add(t));
+    let deadline = match (own_deadline, limits.deadline) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    };
+    let mut climb = Climb::new(task, config, limits, deadline);
+    climb.stats.end = climb.run();
+    climb.stats.patterns = climb.collection.len();
+    climb.stats.total_size = climb.collection_size;
+    climb.stats.time = start.elapsed();
+    (climb.collection, climb.stats)
+}
+
+/// The state of a climb.
+struct Climb<'t> {
+    task: &'t Task,
+    config: &'t IpdbConfig,
+    limits: &'t SearchLimits,
+    deadline: Option<Instant>,
+    builder: PdbBuilder,
+    additivity: Additivity,
+    /// The variables that may be added to a pattern containing `v`, sorted: `v`'s
+    /// precondition-to-effect predecessors and the goal variables among its successors
+    /// (see the module documentation).
+    neighbours: Vec<Vec<u32>>,
+    collection: Vec<PatternDatabase>,
+    collection_size: u64,
+    cliques: Vec<Vec<u32>>,
+    /// Candidates in order of generation; `None` once chosen or rejected.
+    candidates: Vec<Option<Candidate>>,
+    generated: FxHashSet<Vec<VarId>>,
+    /// Bytes of the collection's and the candidates' tables.
+    table_bytes: u64,
+    stats: HillClimbingStatistics,
+    rng: Rng,
+    walker: Walker,
+    average_cost: f64,
+    /// Sampled states, `num_vars` values each.
+    samples: Vec<u32>,
+    /// Collection values on the samples: `values[p * num_samples + s]` (0 for dead
+    /// ends).
+    values: Vec<u32>,
+    /// The collection's canonical value of each sample (`None`: a dead end).
+    sample_h: Vec<Option<u64>>,
+}
+
+impl<'t> Climb<'t> {
+    fn new(
+        task: &'t Task,
+        config: &'t IpdbConfig,
+        limits: &'t SearchLimits,
+        deadline: Option<Instant>,
+    ) -> Climb<'t> {
+        let n = task.variables.len();
+        let mut is_goal = vec![false; n];
+        for f in &task.goal {
+            is_goal[f.var.index()] = true;
+        }
+        let mut neighbours: Vec<Vec<u32>> = vec![Vec::new(); n];
+        for op in &task.operators {
+            for e in &op.effects {
+                let v = e.var.index();
+                // Precondition-to-effect predecessors of v.
+                neighbours[v].extend(op.preconditions.iter().map(|f| f.var.0));
+                // Goal variables among v's successors: effects of operators with a
+                // precondition or an effect on v.
+                for f in op.effects.iter().filter(|f| is_goal[f.var.index()]) {
+                    neighbours[v].push(f.var.0);
+                }
+            }
+            for p in &op.preconditions {
+                for f in op.effects.iter().filter(|f| is_goal[f.var.index()]) {
+                    neighbours[p.var.index()].push(f.var.0);
+                }
+            }
+        }
+        for (v, list) in neighbours.iter_mut().enumerate() {
+            list.sort_unstable();
+            list.dedup();
+            list.retain(|&w| w as usize != v);
+        }
+        let total_cost: f64 = task.operators.iter().map(|op| task.cost(op) as f64).sum();
+        let average_cost = if task.operators.is_empty() {
+            1.0
+        } else {
+            total_cost / task.operators.len() as f64
+        };
+        Climb {
+            task,
+            config,
+            limits,
+            deadline,
+            builder: PdbBuilder::new(task),
+            additivity: Additivity::new(task),
+            neighbours,
+            collection: Vec::new(),
+            collection_size: 0,
+            cliques: Vec::new(),
+            candidates: Vec::new(),
+            generated: FxHashSet::default(),
+            table_bytes: 0,
+            stats: HillClimbingStatistics::default(),
+            rng: Rng::new(config.random_seed),
+            walker: Walker::new(task),
+            average_cost,
+            samples: Vec::new(),
+            values: Vec::new(),
+            sample_h: Vec::new(),
+        }
+    }
+
+    /// The climb; returns why it ended.
+    fn run(&mut self) -> ClimbEnd {
+        let mut goal_vars: Vec<VarId> = self.task.goal.iter().map(|f| f.var).collect();
+        goal_vars.sort_unstable();
+        goal_vars.dedup();
+        for var in goal_vars {
+            let pdb = self.build(&[var]);
+            self.add_to_collection(pdb);
+        }
+        for p in 0..self.collection.len() {
+            if let Some(end) = self.generate_candidates(p) {
+                return end;
+            }
+        }
+        loop {
+            if let Some(end) = self.limit_reached() {
+                return end;
+            }
+            self.stats.iterations += 1;
+            let Some(initial_h) = self.canonical(&self.task.initial_state) else {
+                return ClimbEnd::InitialDeadEnd;
+            };
+            let t = Instant::now();
+            self.sample(initial_h);
+            self.stats.sampling_time += t.elapsed();
+            let t = Instant::now();
+            let best = self.best_candidate();
+            self.stats.evaluation_time += t.elapsed();
+            let Some((best, improvement)) = best else {
+                return ClimbEnd::Converged;
+            };
+            if improvement < u64::from(self.config.min_improvement) {
+                return ClimbEnd::Converged;
+            }
+            let Some(chosen) = self.candidates[best].take() else {
+                return ClimbEnd::Converged;
+            };
+            self.add_to_collection(chosen.pdb);
+            if let Some(end) = self.generate_candidates(self.collection.len() - 1) {
+                return end;
+            }
+        }
+    }
+
+    fn build(&mut self, pattern: &[VarId]) -> PatternDatabase {
+        let t = Instant::now();
+        let pdb = self.builder.build(pattern);
+        self.stats.pdb_time += t.elapsed();
+        self.table_bytes += pdb.memory_bytes() as u64;
+        pdb
+    }
+
+    fn add_to_collection(&mut self, pdb: PatternDatabase) {
+        self.collection_size += pdb.size() as u64;
+        self.collection.push(pdb);
+        let patterns: Vec<&[VarId]> = self.collection.iter().map(|p| p.pattern()).collect();
+        self.cliques = additive_cliques(&self.additivity, &patterns);
+    }
+
+    /// The time or memory limit that has been reached, if any.
+    fn limit_reached(&self) -> Option<ClimbEnd> {
+        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+            return Some(ClimbEnd::TimeLimit);
+        }
+        if let Some(limit) = self.limits.memory_limit_bytes {
+            let used = match self.limits.memory_usage {
+                Some(read) => read(),
+                None => self.table_bytes,
+            };
+            if used > limit {
+                return Some(ClimbEnd::MemoryLimit);
+            }
+        }
+        if self
+            .config
+            .max_generated_patterns
+            .is_some_and(|m| self.stats.generated_patterns >= m)
+        {
+            return Some(ClimbEnd::GeneratedPatternsLimit);
+        }
+        None
+    }
+
+    /// Generates the candidates of collection pattern `p`, building their databases;
+    /// returns the limit that stopped it, if one did.
+    fn generate_candidates(&mut self, p: usize) -> Option<ClimbEnd> {
+        let pattern = self.collection[p].pattern().to_vec();
+        // In order of the pattern's variables, then of their neighbours.
+        let extra: Vec<u32> = pattern
+            .iter()
+            .flat_map(|v| self.neighbours[v.index()].iter().copied())
+            .filter(|&w| pattern.binary_search(&VarId(w)).is_err())
+            .collect();
+        for w in extra {
+            let mut candidate = pattern.clone();
+            let at = candidate.partition_point(|v| v.0 < w);
+            candidate.insert(at, VarId(w));
+            let Some(size) = pattern_size(self.task, &candidate, self.config.pdb_max_size) else {
+                continue;
+            };
+            if self.generated.contains(&candidate) {
+                continue;
+            }
+            if let Some(end) = self.limit_reached() {
+                return Some(end);
+            }
+            let pdb = self.build(&candidate);
+            self.generated.insert(candidate);
+            self.stats.generated_patterns += 1;
+            self.stats.max_pdb_size = self.stats.max_pdb_size.max(size);
+            self.candidates.push(Some(Candidate {
+                pdb,
+                additive: Vec::new(),
+            }));
+        }
+        None
+    }
+
+    /// The canonical value of `state` for the collection.
+    fn canonical(&self, state: &[u32]) -> Option<u64> {
+        let mut values = Vec::with_capacity(self.collection.len());
+        for pdb in &self.collection {
+            match pdb.raw(state) {
+                DEAD => return None,
+                v => values.push(u64::from(v)),
+            }
+        }
+        self.cliques
+            .iter()
+            .map(|c| c.iter().map(|&m| values[m as usize]).sum())
+            .max()
+    }
+
+    /// True if a database of the collection calls `state` a dead end.
+    fn is_dead_end(&self, state: &[u32]) -> bool {
+        self.collection
+            .iter()
+            .any(|p| p.has_dead_ends() && p.raw(state) == DEAD)
+    }
+
+    /// Samples states by random walks (see the module documentation) into `samples`.
+    fn sample(&mut self, initial_h: u64) {
+        // The number of coin flips of the binomial distribution: four times the
+        // estimated number of steps, or 10 if h is 0 (then the average cost need not
+        // be positive); capped far beyond any walk that could finish in reasonable time.
+        let flips = if initial_h == 0 || self.average_cost <= 0.0 {
+            10
+        } else {
+            let steps = (initial_h as f64 / self.average_cost + 0.5).floor();
+            (4.0 * steps).min(1e9) as u64
+        };
+        let init = &self.task.initial_state;
+        let n = init.len();
+        let samples = self.config.num_samples as usize;
+        self.samples.clear();
+        for _ in 0..samples {
+            let length = self.rng.binomial_half(flips);
+            self.walker.set_state(init);
+            for _ in 0..length {
+                let applicable = self.walker.applicable();
+                if applicable.is_empty() {
+                    break; // The walk ends where it is stuck.
+                }
+                let op = applicable[self.rng.below(applicable.len())];
+                self.walker.apply(op);
+                if self.is_dead_end(self.walker.state()) {
+                    self.walker.set_state(init);
+                }
+            }
+            self.samples.extend_from_slice(self.walker.state());
+        }
+        // The collection's values on the samples, pattern by pattern (dead ends as 0:
+        // those samples are not compared), and the canonical value of each sample.
+        let patterns = self.collection.len();
+        self.values.clear();
+        self.values.resize(patterns * samples, 0);
+        self.sample_h.clear();
+        self.sample_h.resize(samples, Some(0));
+        for (p, pdb) in self.collection.iter().enumerate() {
+            let column = &mut self.values[p * samples..(p + 1) * samples];
+            for (s, value) in column.iter_mut().enumerate() {
+                let v = pdb.raw(&self.samples[s * n..(s + 1) * n]);
+                if v == DEAD {
+                    self.sample_h[s] = None;
+                } else {
+                    *value = v;
+                }
+            }
+        }
+        let mut h = vec![0u64; samples];
+        let mut sum = vec![0u64; samples];
+        for clique in &self.cliques {
+            sum.fill(0);
+            for &m in clique {
+                let column = &self.values[m as usize * samples..(m as usize + 1) * samples];
+                for (acc, &v) in sum.iter_mut().zip(column) {
+                    *acc += u64::from(v);
+                }
+            }
+            for (best, &acc) in h.iter_mut().zip(&sum) {
+                *best = (*best).max(acc);
+            }
+        }
+        for (current, value) in self.sample_h.iter_mut().zip(h) {
+            if current.is_some() {
+                *current = Some(value);
+            }
+        }
+    }
+
+    /// The first candidate improving the most samples, with that number; rejects the
+    /// candidates the collection has no room for.
+    fn best_candidate(&mut self) -> Option<(usize, u64)> {
+        let room = self
+            .config
+            .collection_max_size
+            .saturating_sub(self.collection_size);
+        let patterns = self.collection.len();
+        let n = self.task.variables.len();
+        let samples = self.config.num_samples as usize;
+        // Group the candidates by the collection patterns they are not additive with.
+        let mut keys: FxHashMap<Vec<bool>, usize> = FxHashMap::default();
+        let mut non_additive: Vec<Vec<u32>> = Vec::new();
+        let mut key_of: Vec<usize> = vec![usize::MAX; self.candidates.len()];
+        for (c, slot) in self.candidates.iter_mut().enumerate() {
+            let Some(candidate) = slot else {
+                continue;
+            };
+            if candidate.pdb.size() as u64 > room {
+                self.table_bytes -= candidate.pdb.memory_bytes() as u64;
+                *slot = None;
+                self.stats.rejected_patterns += 1;
+                continue;
+            }
+            while candidate.additive.len() < patterns {
+                let other = self.collection[candidate.additive.len()].pattern();
+                let additive = self.additivity.additive(candidate.pdb.pattern(), other);
+                candidate.additive.push(additive);
+            }
+            let next = keys.len();
+            key_of[c] = *keys.entry(candidate.additive.clone()).or_insert_with(|| {
+                let others = (0..patterns as u32)
+                    .filter(|&p| !candidate.additive[p as usize])
+                    .collect();
+                non_additive.push(others);
+                next
+            });
+        }
+        let maxima = subset_maxima(
+            &self.cliques,
+            &self.values,
+            &self.sample_h,
+            patterns,
+            &non_additive,
+        );
+        let mut best: Option<(usize, u64)> = None;
+        for (c, slot) in self.candidates.iter().enumerate() {
+            let Some(candidate) = slot else {
+                continue;
+            };
+            let maxima = &maxima[key_of[c] * samples..(key_of[c] + 1) * samples];
+            let mut improved = 0u64;
+            for (s, &subset_sum) in maxima.iter().enumerate() {
+                let h = candidate.pdb.raw(&self.samples[s * n..(s + 1) * n]);
+                let better = match self.sample_h[s] {
+                    _ if h == DEAD => true,
+                    None => false,
+                    Some(current) => u64::from(h) + subset_sum > current,
+                };
+                improved += u64::from(better);
+            }
+            if best.is_none_or(|(_, b)| improved > b) {
+                best = Some((c, improved));
+            }
+        }
+        best
+    }
+
+}
+
+/// For each group of candidates (given by the collection patterns they are not
+/// additive with, `non_additive[k]`) and each sample `s` (the collection's values on it
+/// in `values_matrix[p * samples + s]`, its canonical value in `sample_h[s]`), at
+/// `[k * num_samples + s]`: the largest sum of the collection's values on `s` over
+/// a maximal additive subset without those patterns, that is
+/// `max over cliques C of (sum(C) - sum(C ∩ N))`. Per sample the cliques are visited
+/// in decreasing order of their sums, stopping at the first sum no larger than the
+/// best found, which usually ends the scan after a few cliques.
+fn subset_maxima(
+    cliques: &[Vec<u32>],
+    values_matrix: &[u32],
+    sample_h: &[Option<u64>],
+    patterns: usize,
+    non_additive: &[Vec<u32>],
+) -> Vec<u64> {
+    let samples = sample_h.len();
+    let words = patterns.div_ceil(64).max(1);
+    let mut members = vec![0u64; cliques.len() * words];
+    for (c, clique) in cliques.iter().enumerate() {
+        for &m in clique {
+            members[c * words + m as usize / 64] |= 1 << (m % 64);
+        }
+    }
+    let mut maxima = vec![0u64; non_additive.len() * samples];
+    let mut values = vec![0u64; patterns];
+    let mut sums = vec![0u64; cliques.len()];
+    let mut order: Vec<u32> = Vec::with_capacity(cliques.len());
+    let mut counts: Vec<u32> = Vec::new();
+    for s in 0..samples {
+        if sample_h[s].is_none() {
+            continue;
+        }
+        for (p, value) in values.iter_mut().enumerate() {
+            *value = u64::from(values_matrix[p * samples + s]);
+        }
+        for (sum, clique) in sums.iter_mut().zip(cliques) {
+            *sum = clique.iter().map(|&m| values[m as usize]).sum();
+        }
+        sort_decreasing(&sums, &mut order, &mut counts);
+        for (k, others) in non_additive.iter().enumerate() {
+            let mut best = 0u64;
+            for &c in &order {
+                let sum = sums[c as usize];
+                if sum <= best {
+                    break;
+                }
+                let row = &members[c as usize * words..(c as usize + 1) * words];
+                let excluded: u64 = others
+                    .iter()
+                    .filter(|&&p| row[p as usize / 64] >> (p % 64) & 1 == 1)
+                    .map(|&p| values[p as usize])
+                    .sum();
+                best = best.max(sum - excluded);
+            }
+            maxima[k * samples + s] = best;
+        }
+    }
+    maxima
+}
+
+/// Fills `order` with the indices of `keys` by decreasing key (ties by index): a
+/// counting sort when the keys are small, as sums of unit-cost distances are.
+fn sort_decreasing(keys: &[u64], order: &mut Vec<u32>, counts: &mut Vec<u32>) {
+    order.clear();
+    let max = keys.iter().copied().max().unwrap_or(0);
+    if max < 4 * keys.len() as u64 + 64 {
+        counts.clear();
+        counts.resize(max as usize + 2, 0);
+        for &k in keys {
+            counts[(max - k) as usize + 1] += 1;
+        }
+        for i in 1..counts.len() {
+            counts[i] += counts[i - 1];
+        }
+        order.resize(keys.len(), 0);
+        for (i, &k) in keys.iter().enumerate() {
+            let slot = &mut counts[(max - k) as usize];
+            order[*slot as usize] = i as u32;
+            *slot += 1;
+        }
+    } else {
+        order.extend(0..keys.len() as u32);
+        order.sort_unstable_by_key(|&i| (std::cmp::Reverse(keys[i as usize]), i));
+    }
+}
+
+/// A state under a random walk, with its applicable operators kept up to date: each
+/// operator's count of unsatisfied preconditions, and the set of operators with none.
+/// Changing a variable costs O(operators with a precondition on its old or new value),
+/// instead of a successor-generator traversal per step.
+#[derive(Debug)]
+struct Walker {
+    fact_offset: Vec<u32>,
+    /// Operators with fact `f` as a precondition: `pre_of[pre_of_start[f]..pre_of_start[f + 1]]`.
+    pre_of_start: Vec<u32>,
+    pre_of: Vec<u32>,
+    /// Effects of operator `o`: `effects[effect_start[o]..effect_start[o + 1]]`.
+    effect_start: Vec<u32>,
+    effects: Vec<(u32, u32)>,
+    unsatisfied: Vec<u32>,
+    /// The applicable operators, and each operator's place among them (`u32::MAX`: none).
+    applicable: Vec<OpId>,
+    place: Vec<u32>,
+    state: Vec<u32>,
+}
+
+impl Walker {
+    /// A walker standing in the initial state of `task` (valid).
+    fn new(task: &Task) -> Walker {
+        let mut fact_offset = Vec::with_capacity(task.variables.len());
+        let mut facts = 0u32;
+        for v in &task.variables {
+            fact_offset.push(facts);
+            facts += v.domain_size();
+        }
+        let mut pairs: Vec<(u32, u32)> = Vec::new();
+        let mut effect_start = vec![0u32];
+        let mut effects = Vec::new();
+        for (o, op) in task.operators.iter().enumerate() {
+            for f in &op.preconditions {
+                pairs.push((fact_offset[f.var.index()] + f.value, o as u32));
+            }
+            effects.extend(op.effects.iter().map(|f| (f.var.0, f.value)));
+            effect_start.push(effects.len() as u32);
+        }
+        pairs.sort_unstable();
+        let mut pre_of_start = vec![0u32; facts as usize + 1];
+        for &(f, _) in &pairs {
+            pre_of_start[f as usize + 1] += 1;
+        }
+        for f in 0..facts as usize {
+            pre_of_start[f + 1] += pre_of_start[f];
+        }
+        let unsatisfied: Vec<u32> = task
+            .operators
+            .iter()
+            .map(|op| op.preconditions.len() as u32)
+            .collect();
+        let mut walker = Walker {
+            fact_offset,
+            pre_of_start,
+            pre_of: pairs.into_iter().map(|(_, o)| o).collect(),
+            effect_start,
+            effects,
+            place: vec![u32::MAX; unsatisfied.len()],
+            unsatisfied,
+            applicable: Vec::new(),
+            state: vec![0; task.variables.len()],
+        };
+        for o in 0..walker.unsatisfied.len() {
+            if walker.unsatisfied[o] == 0 {
+                walker.add(o as u32);
+            }
+        }
+        // Every variable starts at value 0; the counts then follow set_state.
+        for (var, _) in task.variables.iter().enumerate() {
+            let fact = walker.fact_offset[var] as usize;
+            for i in walker.pre_of_start[fact]..walker.pre_of_start[fact + 1] {
+                let o = walker.pre_of[i as usize];
+                walker.unsatisfied[o as usize] -= 1;
+                if walker.unsatisfied[o as usize] == 0 {
+                    walker.add(o);
+                }
+            }
+        }
+        walker.set_state(&task.initial_state);
+        walker
+    }
+
+    fn add(&mut self, o: u32) {
+        self.place[o as usize] = self.applicable.len() as u32;
+        self.applicable.push(OpId(o));
+    }
+
+    fn remove(&mut self, o: u32) {
+        let at = self.place[o as usize] as usize;
+        self.applicable.swap_remove(at);
+        if let Some(moved) = self.applicable.get(at) {
+            self.place[moved.index()] = at as u32;
+        }
+        self.place[o as usize] = u32::MAX;
+    }
+
+    fn set(&mut self, var: usize, value: u32) {
+        let old = self.state[var];
+        if old == value {
+            return;
+        }
+        let fact = (self.fact_offset[var] + old) as usize;
+        for i in self.pre_of_start[fact]..self.pre_of_start[fact + 1] {
+            let o = self.pre_of[i as usize];
+            if self.unsatisfied[o as usize] == 0 {
+                self.remove(o);
+            }
+            self.unsatisfied[o as usize] += 1;
+        }
+        let fact = (self.fact_offset[var] + value) as usize;
+        for i in self.pre_of_start[fact]..self.pre_of_start[fact + 1] {
+            let o = self.pre_of[i as usize];
+            self.unsatisfied[o as usize] -= 1;
+            if self.unsatisfied[o as usize] == 0 {
+                self.add(o);
+            }
+        }
+        self.state[var] = value;
+    }
+
+    /// Moves to `state`, changing only the variables that differ.
+    fn set_state(&mut self, state: &[u32]) {
+        for (var, &value) in state.iter().enumerate() {
+            self.set(var, value);
+        }
+    }
+
+    /// Applies operator `op`, which must be applicable.
+    fn apply(&mut self, op: OpId) {
+        let range = self.effect_start[op.index()] as usize..self.effect_start[op.index() + 1] as usize;
+        for i in range {
+            let (var, value) = self.effects[i];
+            self.set(var as usize, value);
+        }
+    }
+
+    /// The applicable operators, in an order fixed by the walk so far.
+    fn applicable(&self) -> &[OpId] {
+        &self.applicable
+    }
+
+    fn state(&self) -> &[u32] {
+        &self.state
+    }
+}
+
+/// SplitMix64 (Steele, Lea and Flood 2014): small, fast, and good enough for walks.
+#[derive(Debug, Clone)]
+struct Rng(u64);
+
+impl Rng {
+    fn new(seed: u64) -> Rng {
+        Rng(seed)
+    }
+
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `0..n` (`n > 0`), by Lemire's multiply-shift.
+    fn below(&mut self, n: usize) -> usize {
+        ((u128::from(self.next_u64()) * n as u128) >> 64) as usize
+    }
+
+    /// A draw from the binomial distribution with `n` trials of probability 1/2: the
+    /// number of ones among `n` random bits.
+    fn binomial_half(&mut self, n: u64) -> u64 {
+        let mut ones = 0;
+        let mut left = n;
+        while left >= 64 {
+            ones += u64::from(self.next_u64().count_ones());
+            left -= 64;
+        }
+        if left > 0 {
+            ones += u64::from((self.next_u64() & ((1u64 << left) - 1)).count_ones());
+        }
+        ones
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::successor::tests::{random_task, Rng as TestRng};
+    use task::{Fact, Operator, Variable};
+
+    fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
+        let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
+        Operator {
+            name: name.into(),
+            preconditions: facts(pre),
+            effects: facts(eff),
+            cost,
+        }
+    }
+
+    /// Goal a = 1, reached by `set-a`, which needs b = 1, which costs 5 to set: the goal
+    /// pattern alone sees 1, with b added 6.
+    #[test]
+    fn the_climb_adds_a_precondition_variable() {
+        let task = Task {
+            variables: vec![Variable::binary("a"), Variable::binary("b"), Variable::binary("c")],
+            mutexes: vec![],
+            initial_state: vec![0, 0, 0],
+            goal: vec![Fact::new(VarId(0), 1)],
+            operators: vec![
+                op("set-b", &[(1, 0)], &[(1, 1)], 5),
+                op("set-a", &[(0, 0), (1, 1)], &[(0, 1)], 1),
+                op("set-c", &[], &[(2, 1)], 1),
+            ],
+            use_costs: true,
+        };
+        let config = IpdbConfig {
+            min_improvement: 1,
+            ..IpdbConfig::default()
+        };
+        let mut h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        use crate::heuristic::Heuristic;
+        assert_eq!(h.name(), "ipdb");
+        assert_eq!(h.evaluate(&[0, 0, 0]), Some(6));
+        assert_eq!(h.evaluate(&[0, 1, 0]), Some(1));
+        assert_eq!(h.evaluate(&[1, 0, 1]), Some(0));
+        let s = h.statistics();
+        let climb = s.hill_climbing.clone().unwrap();
+        // {a} and its one candidate {a, b}, which improves every sample and is added;
+        // then there are no candidates left. c is no neighbour of a.
+        assert_eq!(climb.generated_patterns, 1);
+        assert_eq!(climb.iterations, 2);
+        assert_eq!(climb.end, ClimbEnd::Converged);
+        assert_eq!(climb.patterns, 2);
+        assert_eq!(climb.total_size, 6);
+        assert_eq!(climb.max_pdb_size, 4);
+        // Dominance pruning keeps only {a, b}.
+        let patterns: Vec<&[VarId]> = h.pdbs().iter().map(|p| p.pattern()).collect();
+        assert_eq!(patterns, [&[VarId(0), VarId(1)][..]]);
+        assert_eq!((s.patterns, s.pruned_patterns, s.pruned_cliques), (1, 1, 1));
+
+        // Without room for {a, b}, the candidate is rejected.
+        let config = IpdbConfig {
+            min_improvement: 1,
+            collection_max_size: 5,
+            ..IpdbConfig::default()
+        };
+        let mut h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        assert_eq!(h.evaluate(&[0, 0, 0]), Some(1));
+        let climb = h.statistics().hill_climbing.clone().unwrap();
+        assert_eq!((climb.rejected_patterns, climb.patterns), (1, 1));
+        // Nor is it generated when too large, and a zero time limit stops at once.
+        for config in [
+            IpdbConfig {
+                pdb_max_size: 3,
+                ..IpdbConfig::default()
+            },
+            IpdbConfig {
+                max_time: Some(Duration::ZERO),
+                ..IpdbConfig::default()
+            },
+            IpdbConfig {
+                max_generated_patterns: Some(0),
+                ..IpdbConfig::default()
+            },
+        ] {
+            let h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+            let climb = h.statistics().hill_climbing.clone().unwrap();
+            assert_eq!((climb.generated_patterns, climb.patterns), (0, 1));
+        }
+        // A dead initial state ends the climb.
+        let mut dead = task.clone();
+        dead.operators.remove(0);
+        let h = ipdb(&dead, &IpdbConfig::default(), &SearchLimits::default()).unwrap();
+        let climb = h.statistics().hill_climbing.clone().unwrap();
+        assert_eq!(climb.end, ClimbEnd::InitialDeadEnd);
+    }
+
+    /// `subset_maxima` against its definition: every clique minus the excluded patterns.
+    #[test]
+    fn subset_maxima_match_their_definition() {
+        let mut rng = TestRng(3);
+        for round in 0..300 {
+            let patterns = 1 + rng.below(12) as usize;
+            let samples = 1 + rng.below(20) as usize;
+            let cliques: Vec<Vec<u32>> = (0..1 + rng.below(8))
+                .map(|_| (0..patterns as u32).filter(|_| rng.below(3) == 0).collect())
+                .collect();
+            let values: Vec<u32> = (0..patterns * samples)
+                .map(|_| if round % 3 == 0 { rng.below(4) } else { rng.below(1000) })
+                .collect();
+            let sample_h: Vec<Option<u64>> =
+                (0..samples).map(|_| (rng.below(10) > 0).then_some(0)).collect();
+            let groups: Vec<Vec<u32>> = (0..1 + rng.below(4))
+                .map(|_| (0..patterns as u32).filter(|_| rng.below(4) == 0).collect())
+                .collect();
+            let got = subset_maxima(&cliques, &values, &sample_h, patterns, &groups);
+            for (k, excluded) in groups.iter().enumerate() {
+                for s in 0..samples {
+                    let expected = if sample_h[s].is_none() {
+                        0
+                    } else {
+                        cliques
+                            .iter()
+                            .map(|c| {
+                                c.iter()
+                                    .filter(|m| !excluded.contains(m))
+                                    .map(|&m| u64::from(values[m as usize * samples + s]))
+                                    .sum::<u64>()
+                            })
+                            .max()
+                            .unwrap_or(0)
+                    };
+                    assert_eq!(got[k * samples + s], expected, "round {round}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_walker_tracks_applicable_operators() {
+        let mut rng = TestRng(11);
+        for round in 0..100 {
+            let task = random_task(&mut rng, 1 + round % 9, 3 + round * 2 % 40);
+            let mut walker = Walker::new(&task);
+            for step in 0..60 {
+                let state = walker.state().to_vec();
+                let mut got: Vec<OpId> = walker.applicable().to_vec();
+                got.sort();
+                let expected: Vec<OpId> = (0..task.operators.len())
+                    .filter(|&o| task.is_applicable(&task.operators[o], &state))
+                    .map(|o| OpId(o as u32))
+                    .collect();
+                assert_eq!(got, expected, "round {round} step {step}");
+                if step % 13 == 12 || got.is_empty() {
+                    let target: Vec<u32> = task
+                        .variables
+                        .iter()
+                        .map(|v| rng.below(v.domain_size()))
+                        .collect();
+                    walker.set_state(&target);
+                    assert_eq!(walker.state(), target.as_slice());
+                } else {
+                    let op = got[rng.below(got.len() as u32) as usize];
+                    walker.apply(op);
+                    let mut next = state.clone();
+                    for f in &task.operators[op.index()].effects {
+                        next[f.var.index()] = f.value;
+                    }
+                    assert_eq!(walker.state(), next.as_slice());
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn random_numbers() {
+        let mut rng = Rng::new(42);
+        let draws: Vec<u64> = (0..2000).map(|_| rng.binomial_half(100)).collect();
+        assert!(draws.iter().all(|&d| d <= 100));
+        let mean = draws.iter().sum::<u64>() as f64 / draws.len() as f64;
+        assert!((45.0..55.0).contains(&mean), "{mean}");
+        assert_eq!(rng.binomial_half(0), 0);
+        assert!((0..1000).all(|_| rng.below(7) < 7));
+        // Fixed seeds give fixed sequences.
+        let a: Vec<u64> = (0..5).map(|_| Rng::new(1).next_u64()).collect();
+        assert!(a.windows(2).all(|w| w[0] == w[1]));
+        let mut b = Rng::new(1);
+        assert_ne!(b.next_u64(), b.next_u64());
+    }
+}

@@ -137,4 +137,70 @@ pub enum Command {
         #[arg(value_name = "RECORDING", required = true)]
         files: Vec<PathBuf>,
     },
+    /// Ground recordings, cut each hand's frames into segments and classify them as
+    /// Reach, Take, Put, Stack or Idle (the paper's Tables 2 and 1).
+    ///
+    /// Prints per segment its hand, start, end, activity, the object in hand and the object
+    /// acted on; `--json` adds the facts at the last frame before each segment and at its
+    /// last frame. ARFF hand-state tables (FILE.arff) are segmented too, without facts.
+    Segment {
+        /// Recordings (JSON Lines) or ARFF hand-state tables.
+        #[arg(value_name = "FILE", required = true)]
+        files: Vec<PathBuf>,
+        /// Print JSON instead of a table.
+        #[arg(long)]
+        json: bool,
+        /// Grounding thresholds as TOML (docs/grounding.md; fields left out keep the
+        /// paper's values).
+        #[arg(long, value_name = "FILE")]
+        config: Option<PathBuf>,
+        /// The activity tree as JSON (`classify --learn ... -o TREE`); default: Table 1.
+        #[arg(long, value_name = "FILE")]
+        tree: Option<PathBuf>,
+    },
+    /// Print, learn or check the decision tree that classifies activities.
+    ///
+    /// With no FILE: print the tree (the paper's Table 1, or `--tree`). With `--learn`:
+    /// learn a tree with C4.5 (gain ratio, pessimistic pruning at CF 0.25) from labelled
+    /// frames (ARFF hand-state tables, or simulated recordings with NAME.truth.jsonl
+    /// beside them; any nominal ARFF data set on its own, with `--class`), print it and
+    /// write it with `-o`. Otherwise: classify the labelled frames of each FILE with the
+    /// tree and compare with their labels.
+    Classify {
+        /// Labelled frames: ARFF tables or simulated recordings.
+        #[arg(value_name = "FILE", required_if_eq("learn", "true"))]
+        files: Vec<PathBuf>,
+        /// Learn a tree from the files.
+        #[arg(long)]
+        learn: bool,
+        /// Where to write the learned tree (JSON).
+        #[arg(short = 'o', long = "out", value_name = "TREE")]
+        out: Option<PathBuf>,
+        /// The tree to print or check with (JSON); default: Table 1.
+        #[arg(long, value_name = "TREE", conflicts_with = "learn")]
+        tree: Option<PathBuf>,
+        /// The class attribute of a (non hand-state) ARFF data set; default: the last.
+        #[arg(long, value_name = "NAME", requires = "learn")]
+        class: Option<String>,
+        /// Grounding thresholds as TOML, for recordings.
+        #[arg(long, value_name = "FILE")]
+        config: Option<PathBuf>,
+    },
+    /// Draw one recording over time as SVG: per hand its speed, its distance to each
+    /// object and its grip with the thresholds, and its segments as coloured bands (and
+    /// the ground truth's, when NAME.truth.jsonl is beside the recording).
+    Timeline {
+        /// A recording.
+        #[arg(value_name = "RECORDING")]
+        file: PathBuf,
+        /// The SVG file to write.
+        #[arg(short = 'o', long = "out", value_name = "FILE.svg")]
+        out: PathBuf,
+        /// Grounding thresholds as TOML.
+        #[arg(long, value_name = "FILE")]
+        config: Option<PathBuf>,
+        /// The activity tree as JSON; default: Table 1.
+        #[arg(long, value_name = "FILE")]
+        tree: Option<PathBuf>,
+    },
 }

@@ -93,5 +93,42 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             cubes,
         }),
         cli::Command::Inspect { files } => commands::inspect::run(&files),
+        cli::Command::Segment {
+            files,
+            json,
+            config,
+            tree,
+        } => commands::segment::run(commands::segment::SegmentArgs {
+            files,
+            json,
+            config,
+            tree,
+        }),
+        cli::Command::Classify {
+            files,
+            learn,
+            out,
+            tree,
+            class,
+            config,
+        } => commands::classify::run(commands::classify::ClassifyArgs {
+            files,
+            tree,
+            learn,
+            out,
+            class,
+            config,
+        }),
+        cli::Command::Timeline {
+            file,
+            out,
+            config,
+            tree,
+        } => commands::timeline::run(commands::timeline::TimelineArgs {
+            file,
+            out,
+            config,
+            tree,
+        }),
     }
 }

@@ -841,3 +841,266 @@ fn simulate_rejects_bad_arguments_with_exit_36() {
         "wrote output despite bad arguments"
     );
 }
+
+fn demonstrations() -> PathBuf {
+    fixtures().join("demonstrations")
+}
+
+/// `segment` on the example recording (2 frames a second): the right hand reaches for
+/// cube_a, takes it, carries it and stacks it on cube_b.
+#[test]
+fn segment_prints_the_segments_of_the_example_recording() {
+    let out = demoplan()
+        .current_dir(workspace())
+        .args(["segment", "docs/examples/two-cubes.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+    let json = demoplan()
+        .current_dir(workspace())
+        .args(["segment", "--json", "docs/examples/two-cubes.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(json.status.code(), Some(0), "{}", transcript(&json));
+    let doc: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    let segments = doc["files"][0]["segments"].as_array().unwrap();
+    let table = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(table.lines().count(), segments.len() + 2);
+    for s in segments {
+        for key in [
+            "hand",
+            "start",
+            "end",
+            "activity",
+            "in_hand",
+            "acted_on",
+            "start_state",
+            "end_state",
+        ] {
+            assert!(s.get(key).is_some(), "no {key} in {s}");
+        }
+    }
+    // The Stack segment starts from holding cube_a and ends with it on cube_b.
+    let stack = segments.iter().find(|s| s["activity"] == "Stack").unwrap();
+    assert!(stack["start_state"]
+        .as_array()
+        .unwrap()
+        .contains(&"inHand(right_hand, cube_a)".into()));
+    assert!(stack["end_state"]
+        .as_array()
+        .unwrap()
+        .contains(&"onTop(cube_a, cube_b)".into()));
+}
+
+/// Simulated demonstrations segment into the paper's activities, and their ground truth
+/// beside them lets `classify` measure the tree and `timeline` draw both.
+#[test]
+fn segment_classify_and_timeline_on_a_simulated_demonstration() {
+    let tmp = tempdir("segment-simulated");
+    let sim = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "simulate",
+            "--participants",
+            "1",
+            "--per-participant",
+            "2",
+            "-o",
+            "demos",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(sim.status.code(), Some(0), "{}", transcript(&sim));
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["segment", "demos/p01-d01.jsonl", "demos/p01-d02.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let text = String::from_utf8_lossy(&out.stdout);
+    for activity in ["Reach", "Take", "Put", "Stack", "Idle"] {
+        assert!(text.contains(activity), "no {activity} in\n{text}");
+    }
+    let classify = demoplan()
+        .current_dir(&tmp)
+        .args(["classify", "demos/p01-d01.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    assert!(String::from_utf8_lossy(&classify.stdout).contains("agree with the tree"));
+    let learn = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "classify",
+            "--learn",
+            "demos/p01-d01.jsonl",
+            "-o",
+            "tree.json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let with_tree = demoplan()
+        .current_dir(&tmp)
+        .args(["segment", "--tree", "tree.json", "demos/p01-d02.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        with_tree.status.code(),
+        Some(0),
+        "{}",
+        transcript(&with_tree)
+    );
+    let timeline = demoplan()
+        .current_dir(&tmp)
+        .args(["timeline", "demos/p01-d01.jsonl", "-o", "p01-d01.svg"])
+        .output()
+        .unwrap();
+    assert_eq!(timeline.status.code(), Some(0), "{}", transcript(&timeline));
+    let svg = std::fs::read_to_string(tmp.join("p01-d01.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    for label in [
+        "left_hand",
+        "right_hand",
+        "speed (m/s)",
+        "ground truth",
+        "handMove 0.1",
+    ] {
+        assert!(svg.contains(label), "no {label} in the timeline");
+    }
+    let names: Vec<String> = std::fs::read_dir(&tmp)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(
+        !names.iter().any(|n| n.contains("demoplan-tmp")),
+        "{names:?}"
+    );
+}
+
+#[test]
+fn classify_prints_table_one_and_learns_the_weather_tree() {
+    let tmp = tempdir("classify-weather");
+    let table_one = demoplan().args(["classify"]).output().unwrap();
+    assert_eq!(
+        table_one.status.code(),
+        Some(0),
+        "{}",
+        transcript(&table_one)
+    );
+    insta::assert_snapshot!("classify-table-one", transcript(&table_one));
+    let weather = demonstrations().join("weather.nominal.arff");
+    let tree = tmp.join("weather.json");
+    let learn = demoplan()
+        .args(["classify", "--learn"])
+        .arg(&weather)
+        .arg("-o")
+        .arg(&tree)
+        .output()
+        .unwrap();
+    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let text = String::from_utf8_lossy(&learn.stdout).replace(&tree.display().to_string(), "TREE");
+    insta::assert_snapshot!("classify-learn-weather", text);
+    // The tree file prints as it was learned.
+    let printed = demoplan()
+        .args(["classify", "--tree"])
+        .arg(&tree)
+        .output()
+        .unwrap();
+    assert_eq!(printed.status.code(), Some(0), "{}", transcript(&printed));
+    assert!(String::from_utf8_lossy(&learn.stdout)
+        .starts_with(&*String::from_utf8_lossy(&printed.stdout)));
+}
+
+#[test]
+fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
+    let out = demoplan()
+        .current_dir(demonstrations())
+        .args(["segment", "hand-state.arff", "messy-hand-state.arff"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+    let learn = demoplan()
+        .current_dir(demonstrations())
+        .args(["classify", "--learn", "hand-state.arff"])
+        .output()
+        .unwrap();
+    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    assert!(String::from_utf8_lossy(&learn.stdout).contains("25 of 25"));
+}
+
+/// Malformed configuration, tree and ARFF files: exit 31 with file, line and field.
+#[test]
+fn malformed_demonstration_inputs_name_file_line_and_field() {
+    let cases: [(&str, &[&str]); 4] = [
+        (
+            "unknown-field.toml",
+            &[
+                "segment",
+                "--config",
+                "unknown-field.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "open-above-close.toml",
+            &[
+                "segment",
+                "--config",
+                "open-above-close.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unknown-attribute-tree.json",
+            &[
+                "segment",
+                "--tree",
+                "unknown-attribute-tree.json",
+                "hand-state.arff",
+            ],
+        ),
+        ("short-row.arff", &["segment", "short-row.arff"]),
+    ];
+    for (file, args) in cases {
+        let out = demoplan()
+            .current_dir(demonstrations())
+            .args(args)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(31), "{file}: {stderr}");
+        assert!(
+            stderr.contains(&format!("[{file}:")),
+            "{file}: no file:line in\n{stderr}"
+        );
+        assert!(stderr.contains("field `"), "{file}: no field in\n{stderr}");
+        assert!(out.stdout.is_empty(), "{file}: printed output");
+        insta::assert_snapshot!(format!("demonstration-{file}"), transcript(&out));
+    }
+}
+
+#[test]
+fn demonstration_commands_reject_bad_command_lines_with_exit_36() {
+    let tmp = tempdir("demonstration-bad");
+    for args in [
+        &["segment"][..],
+        &["segment", "missing.jsonl"],
+        &["classify", "--learn"],
+        &["classify", "--class", "play"],
+        &["classify", "-o", "tree.json"],
+        &["timeline", "missing.jsonl", "-o", "t.svg"],
+        &["timeline", "x.jsonl", "-o", "t.png"],
+        &["segment", "--config", "missing.toml", "x.jsonl"],
+    ] {
+        let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(36),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+    }
+}

@@ -89,7 +89,9 @@ pub enum PatternCollectionConfig {
     /// `manual_patterns([[0, 1], [2]])` (or just the list): these patterns.
     Manual(Vec<Vec<u32>>),
     /// `systematic(n)`: every interesting pattern of at most `n` variables (`n` is 1 or
-    /// 2); see [`systematic_patterns`](crate::cpdbs::systematic_patterns).
+    /// 2; Pommerening, Röger and Helmert, IJCAI 2013): of one variable the goal
+    /// variables, of two a goal variable with a precondition-to-effect predecessor, or
+    /// two goal variables an operator connects.
     Systematic(u32),
     /// `hillclimbing(...)`, with the options of `ipdb()` (whose
     /// `max_time_dominance_pruning` is ignored here: `cpdbs`' own option counts).

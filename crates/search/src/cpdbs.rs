@@ -216,6 +216,51 @@ pub struct PdbStatistics {
     pub hill_climbing: Option<crate::ipdb::HillClimbingStatistics>,
 }
 
+impl std::fmt::Display for PdbStatistics {
+    /// Log lines in Fast Downward's words (`Hill climbing iterations: 7`, ...), one per
+    /// line, without a final newline; the hill climbing's lines only for `ipdb`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if let Some(c) = &self.hill_climbing {
+            writeln!(f, "Hill climbing iterations: {}", c.iterations)?;
+            writeln!(f, "Hill climbing generated patterns: {}", c.generated_patterns)?;
+            writeln!(f, "Hill climbing rejected patterns: {}", c.rejected_patterns)?;
+            writeln!(f, "Hill climbing maximum PDB size: {}", c.max_pdb_size)?;
+            writeln!(f, "Hill climbing ended: {}", c.end)?;
+            writeln!(f, "Hill climbing time: {:.6}s", c.time.as_secs_f64())?;
+            writeln!(
+                f,
+                "Hill climbing time in PDBs: {:.6}s, sampling: {:.6}s, evaluating candidates: {:.6}s",
+                c.pdb_time.as_secs_f64(),
+                c.sampling_time.as_secs_f64(),
+                c.evaluation_time.as_secs_f64()
+            )?;
+            writeln!(f, "Hill climbing number of patterns: {}", c.patterns)?;
+            writeln!(f, "Hill climbing total PDB size: {}", c.total_size)?;
+        }
+        let cliques = self.cliques + self.pruned_cliques;
+        let patterns = self.patterns + self.pruned_patterns;
+        writeln!(f, "Pruned {} of {cliques} pattern cliques", self.pruned_cliques)?;
+        writeln!(f, "Pruned {} of {patterns} PDBs", self.pruned_patterns)?;
+        writeln!(
+            f,
+            "Dominance pruning took {:.6}s",
+            self.dominance_pruning_time.as_secs_f64()
+        )?;
+        writeln!(f, "Canonical PDB heuristic number of patterns: {}", self.patterns)?;
+        writeln!(f, "Canonical PDB heuristic total PDB size: {}", self.total_size)?;
+        writeln!(
+            f,
+            "Canonical PDB heuristic memory: {} KB",
+            self.memory_bytes.div_ceil(1024)
+        )?;
+        write!(
+            f,
+            "Canonical PDB heuristic computation time: {:.6}s",
+            self.total_time.as_secs_f64()
+        )
+    }
+}
+
 /// The canonical heuristic over a collection of pattern databases; see the module
 /// documentation. Admissible and consistent.
 ///
@@ -355,50 +400,106 @@ impl Heuristic for CanonicalPdbs {
 
 /// The cliques not dominated by another: clique `a` is dominated by `b` if every pattern
 /// of `a` is a subset of some pattern of `b` (then `b`'s sum is at least `a`'s, since
-/// additive patterns inside one superpattern sum to at most its value). Stops pruning at
-/// `deadline`. O(patterns^2 * pattern size + cliques^2 * clique size * patterns / 64).
+/// additive patterns inside one superpattern sum to at most its value). Cliques are taken
+/// in order; each one not pruned yet prunes the later and earlier ones it dominates, so
+/// of two equivalent cliques the first survives. Stops pruning at `deadline`.
+///
+/// To avoid comparing all pairs, every clique is filed under one *key* pattern: its
+/// member in the fewest cliques among those without a strict superset in the collection
+/// (or among all its members if it has none). A clique `b` can only dominate `a` if `b`'s
+/// downward closure (the patterns that are subsets of one of `b`'s) holds `a`'s key, and
+/// a key without a strict superset is in that closure only if it is in `b` itself; so
+/// `b` looks only at the cliques filed under the patterns of its closure. The patterns
+/// are distinct. Time O(patterns^2 * pattern size + cliques * clique size) plus the
+/// comparisons, each O(clique size) with an early exit.
 fn prune_dominated(
     patterns: &[&[VarId]],
     cliques: Vec<Vec<u32>>,
     deadline: Instant,
 ) -> Vec<Vec<u32>> {
     let n = patterns.len();
-    let words = n.div_ceil(64);
+    let words = n.div_ceil(64).max(1);
     let subset = |a: &[VarId], b: &[VarId]| a.iter().all(|v| b.binary_search(v).is_ok());
-    // supersets[p]: the patterns containing pattern p.
-    let mut supersets = vec![vec![0u64; words]; n];
-    for p in 0..n {
-        for q in 0..n {
+    // subsets[q]: the patterns contained in pattern q (q included).
+    let mut subsets = vec![0u64; n * words];
+    let mut maximal = vec![true; n];
+    for q in 0..n {
+        for p in 0..n {
             if subset(patterns[p], patterns[q]) {
-                supersets[p][q / 64] |= 1 << (q % 64);
+                subsets[q * words + p / 64] |= 1 << (p % 64);
+                if p != q {
+                    maximal[p] = false;
+                }
             }
         }
     }
-    let sets: Vec<Vec<u64>> = cliques
-        .iter()
-        .map(|c| {
-            let mut set = vec![0u64; words];
-            for &m in c {
-                set[m as usize / 64] |= 1 << (m % 64);
-            }
-            set
-        })
-        .collect();
+    let mut count = vec![0u32; n];
+    for c in &cliques {
+        for &m in c {
+            count[m as usize] += 1;
+        }
+    }
+    let key = |c: &[u32]| {
+        let rarest = |maximal_only: bool| {
+            c.iter()
+                .copied()
+                .filter(|&m| !maximal_only || maximal[m as usize])
+                .min_by_key(|&m| (count[m as usize], m))
+        };
+        rarest(true).or_else(|| rarest(false))
+    };
+    // Cliques filed by key: bucket[start[p]..start[p + 1]].
+    let mut start = vec![0u32; n + 1];
+    let keys: Vec<Option<u32>> = cliques.iter().map(|c| key(c)).collect();
+    for k in keys.iter().flatten() {
+        start[*k as usize + 1] += 1;
+    }
+    for p in 0..n {
+        start[p + 1] += start[p];
+    }
+    let mut next = start.clone();
+    let mut bucket = vec![0u32; start[n] as usize];
+    for (c, k) in keys.iter().enumerate() {
+        if let Some(k) = k {
+            bucket[next[*k as usize] as usize] = c as u32;
+            next[*k as usize] += 1;
+        }
+    }
+    let mut len: Vec<u32> = start.windows(2).map(|w| w[1] - w[0]).collect();
     let mut pruned = vec![false; cliques.len()];
-    for a in 0..cliques.len() {
-        if Instant::now() >= deadline {
+    let mut closure = vec![0u64; words];
+    for b in 0..cliques.len() {
+        if pruned[b] {
+            continue;
+        }
+        if b % 256 == 0 && Instant::now() >= deadline {
             break;
         }
-        pruned[a] = (0..cliques.len()).any(|b| {
-            b != a
-                && !pruned[b]
-                && cliques[a].iter().all(|&p| {
-                    supersets[p as usize]
-                        .iter()
-                        .zip(&sets[b])
-                        .any(|(x, y)| x & y != 0)
-                })
-        });
+        closure.fill(0);
+        for &q in &cliques[b] {
+            for (w, &bits) in closure.iter_mut().zip(&subsets[q as usize * words..]) {
+                *w |= bits;
+            }
+        }
+        let in_closure = |p: u32| closure[p as usize / 64] >> (p % 64) & 1 == 1;
+        for p in (0..n).filter(|&p| in_closure(p as u32)) {
+            // Scan the bucket, dropping the cliques pruned by now from it for good.
+            let low = start[p] as usize;
+            let mut kept = low;
+            for i in low..low + len[p] as usize {
+                let a = bucket[i] as usize;
+                if pruned[a] {
+                    continue;
+                }
+                if a != b && cliques[a].iter().all(|&m| in_closure(m)) {
+                    pruned[a] = true;
+                    continue;
+                }
+                bucket[kept] = a as u32;
+                kept += 1;
+            }
+            len[p] = (kept - low) as u32;
+        }
     }
     cliques
         .into_iter()

@@ -1,38 +1,49 @@
 //! iPDB: a pattern collection chosen by hill climbing for the canonical heuristic (Haslum,
-//! Botea, Helmert, Bonet and Koenig, AAAI 2007), as Fast Downward's `ipdb()` does it.
+//! Botea, Helmert, Bonet and Koenig, AAAI 2007), as Fast Downward documents its `ipdb()`.
 //!
 //! The climb starts with one pattern per goal variable. Its neighbours are the *candidate*
-//! patterns: a pattern `P` of the collection plus one variable that is a causal-graph
-//! predecessor (an operator has a precondition or an effect on it and an effect on the
-//! other) of a variable of `P`, whose database has at most `pdb_max_size` abstract states.
-//! Every candidate's database is built once, when the candidate is generated, and kept
-//! until it is chosen or rejected. Each iteration:
+//! patterns: a pattern `P` of the collection plus one variable `v` *relevant* to a
+//! variable `w` of `P`, whose database has at most `pdb_max_size` abstract states. Relevant
+//! are `w`'s precondition-to-effect predecessors in the causal graph (an operator has a
+//! precondition on `v` and an effect on `w`) and the goal variables among `w`'s successors
+//! (an operator has a precondition or an effect on `w` and an effect on the goal variable
+//! `v`): the neighbourhood of the paper with its errata, under which adding a goal
+//! variable that depends on `P` can raise the estimate. Candidates are generated in the
+//! order of `P`'s variables, then of their relevant variables, skipping patterns generated
+//! before. Every candidate's database is built once, when the candidate is generated, and
+//! kept until it is chosen or rejected. Each iteration:
 //!
-//! 1. samples `num_samples` states by random walks from the initial state. Each walk's
-//!    length is binomially distributed with `n = 4 * steps` and `p = 1/2` (mean twice the
-//!    estimated number of solution steps, `steps = round(h(initial) / average operator
-//!    cost)` with the current collection's h), and a walk that reaches a state without
-//!    successors or a dead end of the current collection restarts at the initial state;
+//! 1. samples `num_samples` states by random walks from the initial state. A walk's
+//!    length is binomially distributed with `n = 4 * steps` trials of probability 1/2
+//!    (mean twice the estimated number of solution steps, `steps = round(h(initial) /
+//!    average operator cost)` under the current collection), `n = 10` when `h(initial)`
+//!    is 0. A walk ends early in a state without applicable operators, and restarts at the
+//!    initial state when it reaches a dead end of the current collection. Applicable
+//!    operators are tracked incrementally (a count of unsatisfied preconditions per
+//!    operator), so a step costs the operators whose preconditions mention the changed
+//!    variables, not a successor-generator traversal;
 //! 2. counts, for every candidate, the samples whose canonical value would rise with the
 //!    candidate added: a sample `s` improves if the candidate's database calls it a dead
 //!    end, or if for some maximal additive subset `C` of the current collection the sum
 //!    over the patterns of `C` additive with the candidate, plus the candidate's value,
-//!    exceeds the current value of `s` (the counting approximation of the paper);
+//!    exceeds the current value of `s` (the counting approximation of the paper); samples
+//!    that are dead ends of the collection never improve. Per sample, the cliques are
+//!    taken by decreasing sum, lazily, and candidates that are not additive with the same
+//!    collection patterns share the scan (see `count_improvements`);
 //! 3. adds the candidate with the most improved samples (the first of equals) if it
 //!    improves at least `min_improvement` of them, and generates the candidates of the new
 //!    pattern; otherwise the climb ends.
 //!
 //! Candidates whose database would take the collection beyond `collection_max_size`
-//! abstract states are rejected. The climb also ends when the initial state is a dead end,
-//! at `max_time`, at the caller's deadline or memory limit, or once
-//! `max_generated_patterns` candidates were generated. The per-sample maximum over the
-//! additive subsets depends only on which collection patterns are additive with the
-//! candidate, so it is computed once per distinct answer and iteration.
+//! abstract states are rejected when next evaluated. The climb also ends when the initial
+//! state is a dead end, at `max_time`, at the caller's deadline or memory limit, or once
+//! `max_generated_patterns` candidates were generated.
 //!
 //! The default options are Fast Downward's (`pdb_max_size=2000000`,
 //! `collection_max_size=20000000`, `num_samples=1000`, `min_improvement=10`, no time
-//! limit); the random walks use a fixed-seed generator (SplitMix64), so a run is
-//! deterministic: the same task and options give the same collection.
+//! limit); the random walks use a fixed-seed generator (SplitMix64, seed 0 by default), so
+//! a run is deterministic: the same task and options give the same collection. The
+//! random choices differ from Fast Downward's, so the collections may differ in detail.
 
 use std::time::{Duration, Instant};
 
@@ -41,7 +52,7 @@ use task::{OpId, Task, VarId};
 
 use crate::astar::SearchLimits;
 use crate::cpdbs::{additive_cliques, Additivity, CanonicalPdbs};
-use crate::pdb::{pattern_size, PatternDatabase, PatternError, PdbBuilder};
+use crate::pdb::{pattern_size, PatternDatabase, PatternError, PdbBuilder, MAX_PDB_SIZE};
 
 const DEAD: u32 = u32::MAX;
 
@@ -96,6 +107,19 @@ pub enum ClimbEnd {
     MemoryLimit,
     /// `max_generated_patterns` candidates were generated.
     GeneratedPatternsLimit,
+}
+
+impl std::fmt::Display for ClimbEnd {
+    /// `converged`, `initial state is a dead end`, `time limit`, ...
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            ClimbEnd::Converged => "converged",
+            ClimbEnd::InitialDeadEnd => "initial state is a dead end",
+            ClimbEnd::TimeLimit => "time limit",
+            ClimbEnd::MemoryLimit => "memory limit",
+            ClimbEnd::GeneratedPatternsLimit => "generated patterns limit",
+        })
+    }
 }
 
 /// What the hill climbing did, in Fast Downward's terms, and where its time went.
@@ -372,7 +396,8 @@ impl<'t> Climb<'t> {
             let mut candidate = pattern.clone();
             let at = candidate.partition_point(|v| v.0 < w);
             candidate.insert(at, VarId(w));
-            let Some(size) = pattern_size(self.task, &candidate, self.config.pdb_max_size) else {
+            let limit = self.config.pdb_max_size.min(MAX_PDB_SIZE);
+            let Some(size) = pattern_size(self.task, &candidate, limit) else {
                 continue;
             };
             if self.generated.contains(&candidate) {
@@ -523,29 +548,32 @@ impl<'t> Climb<'t> {
                 next
             });
         }
-        let maxima = subset_maxima(
+        // The candidates' values on the samples.
+        let live: Vec<usize> = (0..self.candidates.len())
+            .filter(|&c| self.candidates[c].is_some())
+            .collect();
+        let mut candidate_h = vec![0u32; live.len() * samples];
+        for (i, &c) in live.iter().enumerate() {
+            let Some(candidate) = &self.candidates[c] else {
+                continue;
+            };
+            let row = &mut candidate_h[i * samples..(i + 1) * samples];
+            for (s, h) in row.iter_mut().enumerate() {
+                *h = candidate.pdb.raw(&self.samples[s * n..(s + 1) * n]);
+            }
+        }
+        let keys: Vec<usize> = live.iter().map(|&c| key_of[c]).collect();
+        let improved = count_improvements(
             &self.cliques,
             &self.values,
             &self.sample_h,
             patterns,
             &non_additive,
+            &keys,
+            &candidate_h,
         );
         let mut best: Option<(usize, u64)> = None;
-        for (c, slot) in self.candidates.iter().enumerate() {
-            let Some(candidate) = slot else {
-                continue;
-            };
-            let maxima = &maxima[key_of[c] * samples..(key_of[c] + 1) * samples];
-            let mut improved = 0u64;
-            for (s, &subset_sum) in maxima.iter().enumerate() {
-                let h = candidate.pdb.raw(&self.samples[s * n..(s + 1) * n]);
-                let better = match self.sample_h[s] {
-                    _ if h == DEAD => true,
-                    None => false,
-                    Some(current) => u64::from(h) + subset_sum > current,
-                };
-                improved += u64::from(better);
-            }
+        for (&c, &improved) in live.iter().zip(&improved) {
             if best.is_none_or(|(_, b)| improved > b) {
                 best = Some((c, improved));
             }
@@ -555,20 +583,28 @@ impl<'t> Climb<'t> {
 
 }
 
-/// For each group of candidates (given by the collection patterns they are not
-/// additive with, `non_additive[k]`) and each sample `s` (the collection's values on it
-/// in `values_matrix[p * samples + s]`, its canonical value in `sample_h[s]`), at
-/// `[k * num_samples + s]`: the largest sum of the collection's values on `s` over
-/// a maximal additive subset without those patterns, that is
-/// `max over cliques C of (sum(C) - sum(C ∩ N))`. Per sample the cliques are visited
-/// in decreasing order of their sums, stopping at the first sum no larger than the
-/// best found, which usually ends the scan after a few cliques.
-fn subset_maxima(
+/// For each candidate, the number of samples it improves (see the module
+/// documentation). The collection's values on sample `s` are in
+/// `values[p * samples + s]`, its canonical value in `sample_h[s]`; candidate `i`'s
+/// values in `candidate_h[i * samples + s]`, and the collection patterns it is not
+/// additive with in `non_additive[keys[i]]`.
+///
+/// A candidate with value `h` improves `s` if `h` is a dead end, or if some clique `C`
+/// has `sum(C) - sum(C ∩ N) > h(s) - h`. Per sample the cliques are ordered by
+/// decreasing sum lazily (a binary heap, popped only as far as some query needs), and
+/// each group of candidates with the same `N` keeps how far it has scanned that order
+/// and the best difference found: a query answers from that state or scans on, stopping
+/// at a clique whose sum is no larger than the threshold or than the best found. Most
+/// queries look at a few cliques. A candidate with value 0 never improves a sample
+/// (the difference is at most `h(s)`).
+fn count_improvements(
     cliques: &[Vec<u32>],
-    values_matrix: &[u32],
+    values: &[u32],
     sample_h: &[Option<u64>],
     patterns: usize,
     non_additive: &[Vec<u32>],
+    keys: &[usize],
+    candidate_h: &[u32],
 ) -> Vec<u64> {
     let samples = sample_h.len();
     let words = patterns.div_ceil(64).max(1);
@@ -578,67 +614,75 @@ fn subset_maxima(
             members[c * words + m as usize / 64] |= 1 << (m % 64);
         }
     }
-    let mut maxima = vec![0u64; non_additive.len() * samples];
-    let mut values = vec![0u64; patterns];
-    let mut sums = vec![0u64; cliques.len()];
-    let mut order: Vec<u32> = Vec::with_capacity(cliques.len());
-    let mut counts: Vec<u32> = Vec::new();
-    for s in 0..samples {
-        if sample_h[s].is_none() {
-            continue;
-        }
-        for (p, value) in values.iter_mut().enumerate() {
-            *value = u64::from(values_matrix[p * samples + s]);
-        }
-        for (sum, clique) in sums.iter_mut().zip(cliques) {
-            *sum = clique.iter().map(|&m| values[m as usize]).sum();
-        }
-        sort_decreasing(&sums, &mut order, &mut counts);
-        for (k, others) in non_additive.iter().enumerate() {
-            let mut best = 0u64;
-            for &c in &order {
-                let sum = sums[c as usize];
-                if sum <= best {
-                    break;
-                }
-                let row = &members[c as usize * words..(c as usize + 1) * words];
-                let excluded: u64 = others
-                    .iter()
-                    .filter(|&&p| row[p as usize / 64] >> (p % 64) & 1 == 1)
-                    .map(|&p| values[p as usize])
-                    .sum();
-                best = best.max(sum - excluded);
-            }
-            maxima[k * samples + s] = best;
+    let mut excluded_sets = vec![0u64; non_additive.len() * words];
+    for (k, others) in non_additive.iter().enumerate() {
+        for &p in others {
+            excluded_sets[k * words + p as usize / 64] |= 1 << (p % 64);
         }
     }
-    maxima
-}
-
-/// Fills `order` with the indices of `keys` by decreasing key (ties by index): a
-/// counting sort when the keys are small, as sums of unit-cost distances are.
-fn sort_decreasing(keys: &[u64], order: &mut Vec<u32>, counts: &mut Vec<u32>) {
-    order.clear();
-    let max = keys.iter().copied().max().unwrap_or(0);
-    if max < 4 * keys.len() as u64 + 64 {
-        counts.clear();
-        counts.resize(max as usize + 2, 0);
-        for &k in keys {
-            counts[(max - k) as usize + 1] += 1;
+    let mut improved = vec![0u64; keys.len()];
+    let mut column = vec![0u64; patterns];
+    let mut heap_storage: Vec<(u64, std::cmp::Reverse<u32>)> = Vec::with_capacity(cliques.len());
+    let mut prefix: Vec<(u64, u32)> = Vec::with_capacity(cliques.len());
+    // Per group: cliques of the prefix scanned, best difference found.
+    let mut scan: Vec<(u32, u64)> = vec![(0, 0); non_additive.len()];
+    for (s, current) in sample_h.iter().enumerate() {
+        let current = *current;
+        for (p, value) in column.iter_mut().enumerate() {
+            *value = u64::from(values[p * samples + s]);
         }
-        for i in 1..counts.len() {
-            counts[i] += counts[i - 1];
-        }
-        order.resize(keys.len(), 0);
+        heap_storage.clear();
+        heap_storage.extend(cliques.iter().enumerate().map(|(c, clique)| {
+            let sum: u64 = clique.iter().map(|&m| column[m as usize]).sum();
+            (sum, std::cmp::Reverse(c as u32))
+        }));
+        let mut heap = std::collections::BinaryHeap::from(std::mem::take(&mut heap_storage));
+        prefix.clear();
+        scan.fill((0, 0));
         for (i, &k) in keys.iter().enumerate() {
-            let slot = &mut counts[(max - k) as usize];
-            order[*slot as usize] = i as u32;
-            *slot += 1;
+            let h = candidate_h[i * samples + s];
+            let better = match current {
+                _ if h == DEAD => true,
+                None => false,
+                Some(_) if h == 0 => false,
+                Some(current) if u64::from(h) > current => true,
+                Some(current) => {
+                    let threshold = current - u64::from(h);
+                    let others = &excluded_sets[k * words..(k + 1) * words];
+                    let (pos, best) = &mut scan[k];
+                    loop {
+                        if *best > threshold {
+                            break true;
+                        }
+                        if *pos as usize == prefix.len() {
+                            match heap.pop() {
+                                Some((sum, std::cmp::Reverse(c))) => prefix.push((sum, c)),
+                                None => break false,
+                            }
+                        }
+                        let (sum, c) = prefix[*pos as usize];
+                        if sum <= threshold || sum <= *best {
+                            break false; // No later clique has a larger sum.
+                        }
+                        *pos += 1;
+                        let row = &members[c as usize * words..(c as usize + 1) * words];
+                        let mut excluded = 0u64;
+                        for (w, (&a, &b)) in row.iter().zip(others).enumerate() {
+                            let mut common = a & b;
+                            while common != 0 {
+                                excluded += column[w * 64 + common.trailing_zeros() as usize];
+                                common &= common - 1;
+                            }
+                        }
+                        *best = (*best).max(sum - excluded);
+                    }
+                }
+            };
+            improved[i] += u64::from(better);
         }
-    } else {
-        order.extend(0..keys.len() as u32);
-        order.sort_unstable_by_key(|&i| (std::cmp::Reverse(keys[i as usize]), i));
+        heap_storage = heap.into_vec();
     }
+    improved
 }
 
 /// A state under a random walk, with its applicable operators kept up to date: each
@@ -912,6 +956,32 @@ mod tests {
             let climb = h.statistics().hill_climbing.clone().unwrap();
             assert_eq!((climb.generated_patterns, climb.patterns), (0, 1));
         }
+        // The caller's limits stop it too.
+        let past = SearchLimits {
+            deadline: Some(Instant::now()),
+            ..SearchLimits::default()
+        };
+        let tight = SearchLimits {
+            memory_limit_bytes: Some(1),
+            ..SearchLimits::default()
+        };
+        for (limits, end) in [(past, ClimbEnd::TimeLimit), (tight, ClimbEnd::MemoryLimit)] {
+            let h = ipdb(&task, &IpdbConfig::default(), &limits).unwrap();
+            let climb = h.statistics().hill_climbing.clone().unwrap();
+            assert_eq!((climb.end, climb.generated_patterns, climb.patterns), (end, 0, 1));
+        }
+        // What the CLI prints.
+        let config = IpdbConfig {
+            min_improvement: 1,
+            ..IpdbConfig::default()
+        };
+        let shown = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        let text = shown.statistics().to_string();
+        assert!(text.starts_with("Hill climbing iterations: 2\nHill climbing generated patterns: 1\n"), "{text}");
+        assert!(text.contains("\nHill climbing ended: converged\n"), "{text}");
+        assert!(text.contains("\nPruned 1 of 2 pattern cliques\nPruned 1 of 2 PDBs\n"), "{text}");
+        assert!(text.contains("\nCanonical PDB heuristic number of patterns: 1\n"), "{text}");
+        assert!(!text.ends_with('\n'));
         // A dead initial state ends the climb.
         let mut dead = task.clone();
         dead.operators.remove(0);
@@ -920,43 +990,56 @@ mod tests {
         assert_eq!(climb.end, ClimbEnd::InitialDeadEnd);
     }
 
-    /// `subset_maxima` against its definition: every clique minus the excluded patterns.
+    /// `count_improvements` against its definition, on random cliques and values.
     #[test]
-    fn subset_maxima_match_their_definition() {
+    fn improvement_counts_match_their_definition() {
         let mut rng = TestRng(3);
-        for round in 0..300 {
-            let patterns = 1 + rng.below(12) as usize;
+        for round in 0..400 {
+            let patterns = 1 + rng.below(70) as usize;
             let samples = 1 + rng.below(20) as usize;
-            let cliques: Vec<Vec<u32>> = (0..1 + rng.below(8))
+            let cliques: Vec<Vec<u32>> = (0..1 + rng.below(12))
                 .map(|_| (0..patterns as u32).filter(|_| rng.below(3) == 0).collect())
                 .collect();
-            let values: Vec<u32> = (0..patterns * samples)
-                .map(|_| if round % 3 == 0 { rng.below(4) } else { rng.below(1000) })
+            let small = round % 3 == 0;
+            let value = |rng: &mut TestRng| if small { rng.below(4) } else { rng.below(1000) };
+            let values: Vec<u32> = (0..patterns * samples).map(|_| value(&mut rng)).collect();
+            let sample_h: Vec<Option<u64>> = (0..samples)
+                .map(|s| {
+                    let h = cliques
+                        .iter()
+                        .map(|c| c.iter().map(|&m| u64::from(values[m as usize * samples + s])).sum())
+                        .max()
+                        .unwrap_or(0);
+                    (rng.below(10) > 0).then_some(h)
+                })
                 .collect();
-            let sample_h: Vec<Option<u64>> =
-                (0..samples).map(|_| (rng.below(10) > 0).then_some(0)).collect();
             let groups: Vec<Vec<u32>> = (0..1 + rng.below(4))
                 .map(|_| (0..patterns as u32).filter(|_| rng.below(4) == 0).collect())
                 .collect();
-            let got = subset_maxima(&cliques, &values, &sample_h, patterns, &groups);
-            for (k, excluded) in groups.iter().enumerate() {
-                for s in 0..samples {
-                    let expected = if sample_h[s].is_none() {
-                        0
-                    } else {
-                        cliques
+            let candidates = 1 + rng.below(10) as usize;
+            let keys: Vec<usize> = (0..candidates).map(|_| rng.below(groups.len() as u32) as usize).collect();
+            let candidate_h: Vec<u32> = (0..candidates * samples)
+                .map(|_| if rng.below(20) == 0 { DEAD } else { value(&mut rng) * 2 })
+                .collect();
+            let got = count_improvements(&cliques, &values, &sample_h, patterns, &groups, &keys, &candidate_h);
+            for (i, &k) in keys.iter().enumerate() {
+                let expected: u64 = (0..samples)
+                    .filter(|&s| {
+                        let h = candidate_h[i * samples + s];
+                        let best = cliques
                             .iter()
                             .map(|c| {
                                 c.iter()
-                                    .filter(|m| !excluded.contains(m))
+                                    .filter(|m| !groups[k].contains(m))
                                     .map(|&m| u64::from(values[m as usize * samples + s]))
                                     .sum::<u64>()
                             })
                             .max()
-                            .unwrap_or(0)
-                    };
-                    assert_eq!(got[k * samples + s], expected, "round {round}");
-                }
+                            .unwrap_or(0);
+                        h == DEAD || sample_h[s].is_some_and(|current| u64::from(h) + best > current)
+                    })
+                    .count() as u64;
+                assert_eq!(got[i], expected, "round {round} candidate {i}");
             }
         }
     }

@@ -6,7 +6,12 @@
 //!   with a hash table of dense [`StateId`]s ([`StateRegistry`]);
 //! - [`SuccessorGenerator`]: a decision tree over variables that finds applicable
 //!   operators without testing every operator;
-//! - [`Heuristic`]: the interface heuristics implement, with [`Blind`] and [`HMax`];
+//! - [`Heuristic`]: the interface heuristics implement, with [`Blind`], [`HMax`] and
+//!   [`LmCut`];
+//! - pattern databases: [`PatternDatabase`] (one pattern's abstract costs, by a backward
+//!   search over regression operators), [`CanonicalPdbs`] (the canonical heuristic over a
+//!   collection) and [`ipdb`] (the collection chosen by hill climbing, Fast Downward's
+//!   `ipdb()`), with what building them did in [`PdbStatistics`];
 //! - [`astar`]: eager A* with reopening, returning a [`SearchResult`] (an [`Outcome`] and
 //!   Fast Downward-style [`Statistics`]) under [`SearchLimits`], reporting each new
 //!   f-layer to an optional observer;
@@ -69,8 +74,8 @@ mod successor;
 
 pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
 pub use config::{
-    alias, parse_search, ConfigError, Engine, HeuristicConfig, SearchConfig, ALIASES, HEURISTICS,
-    PLANNED_HEURISTICS, SEARCH_ENGINES,
+    alias, parse_search, ConfigError, Engine, HeuristicConfig, PatternCollectionConfig,
+    SearchConfig, ALIASES, HEURISTICS, PLANNED_HEURISTICS, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};
@@ -82,8 +87,10 @@ pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;
 
-/// Runs the search `config` describes on `task`: builds its heuristic and calls the
-/// engine ([`astar`]). Fails only if the task is invalid.
+/// Runs the search `config` describes on `task`: builds its heuristic (see
+/// [`HeuristicConfig::build_with_limits`]: the hill climbing of `ipdb` stops at the
+/// limits too) and calls the engine ([`astar`]). Fails only if the task is invalid or a
+/// pattern of the search string does not fit it.
 pub fn search(
     task: &task::Task,
     config: &SearchConfig,

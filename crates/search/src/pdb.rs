@@ -465,7 +465,29 @@ impl PdbBuilder {
             }
             kept.push(op);
         }
-        self.ops = kept;
+        // Drop dominated operators: of two with the same delta, one whose conditions
+        // include the other's and that costs no less adds no transition. Within each
+        // delta, fewer conditions first; groups beyond 256 are left alone (quadratic).
+        kept.sort_unstable_by(|a, b| {
+            (a.delta, a.end - a.start, key(a).0, a.cost).cmp(&(b.delta, b.end - b.start, key(b).0, b.cost))
+        });
+        let mut undominated: Vec<AbstractOp> = Vec::with_capacity(kept.len());
+        let mut group_start = 0;
+        for op in kept {
+            if undominated.get(group_start).is_none_or(|first| first.delta != op.delta) {
+                group_start = undominated.len();
+            }
+            let group = &undominated[group_start..];
+            let conditions = key(&op).0;
+            let dominated = group.len() <= 256
+                && group.iter().any(|other| {
+                    other.cost <= op.cost && is_subset(key(other).0, conditions)
+                });
+            if !dominated {
+                undominated.push(op);
+            }
+        }
+        self.ops = undominated;
     }
 
     /// Adds the regression operators of task operator `o` to `ops`.
@@ -762,6 +784,18 @@ impl PdbBuilder {
             }
         }
     }
+}
+
+/// True if every element of `a` is in `b` (both sorted).
+fn is_subset(a: &[(u32, u32)], b: &[(u32, u32)]) -> bool {
+    let mut rest = b;
+    a.iter().all(|x| match rest.iter().position(|y| y >= x) {
+        Some(i) if rest[i] == *x => {
+            rest = &rest[i + 1..];
+            true
+        }
+        _ => false,
+    })
 }
 
 /// The match tree, borrowed for a search.

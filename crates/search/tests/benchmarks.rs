@@ -124,9 +124,15 @@ fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
     ];
     for (domain, instance) in instances {
         let (task, optimum) = translated_with_optimum(domain, instance);
+        // Pegsol's 156 systematic patterns have 466605 maximal additive subsets, which
+        // take seconds to prune: not for a quick test.
+        let configs = if domain == "pegsol-08-strips" {
+            &configs[..1]
+        } else {
+            &configs[..]
+        };
         for config in configs {
             let config = parse_search(config).unwrap();
-            let t0 = std::time::Instant::now();
             let mut h = config.heuristic.build(&task).unwrap();
             let statistics = h.pdb_statistics().unwrap().clone();
             assert!(statistics.patterns > 0 || task.goal.is_empty());
@@ -138,7 +144,6 @@ fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
             let h0 = result.statistics.initial_h.unwrap();
             assert!(h0 <= optimum, "{domain}/{instance} {config}: h = {h0}");
             assert!(task.is_goal(&search::replay(&task, &plan.operators).unwrap()));
-            eprintln!("TIMING {domain}/{instance} {config}: {:?} expanded {} h0 {h0} opt {optimum} patterns {}", t0.elapsed(), result.statistics.expanded, statistics.patterns);
         }
     }
 }

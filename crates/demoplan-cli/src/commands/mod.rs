@@ -1,9 +1,13 @@
 //! One module per subcommand.
 
 pub mod check;
+pub mod classify;
+pub mod demo_input;
 pub mod fmt;
 pub mod inspect;
 pub mod plan;
+pub mod segment;
 pub mod simulate;
+pub mod timeline;
 pub mod translate;
 pub mod validate;

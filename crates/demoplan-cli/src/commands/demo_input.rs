@@ -1,0 +1,309 @@
+//! Shared by `segment`, `classify` and `timeline`: reading grounding configurations,
+//! trees and ARFF tables (errors with file, line and field, exit 31), and running
+//! grounding and segmentation over a recording.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use grounding::{GroundedFrame, Grounder, GroundingConfig};
+use miette::{Diagnostic, LabeledSpan, NamedSource, SourceSpan};
+use recording::{Frame, Header};
+use segment::{ActivityTree, DecisionTree, HandFrames, Segment, Segmenter};
+
+use crate::diagnostic::{render, Failure};
+use crate::exit::ExitCode;
+use crate::input;
+use crate::recording_input;
+
+/// Frame rate assumed for ARFF tables without a time attribute.
+pub const ARFF_FRAME_RATE: f64 = 30.0;
+
+/// An error at a line (and column) of a text file, rendered with the line underlined.
+#[derive(Debug)]
+struct TextDiagnostic {
+    code: &'static str,
+    message: String,
+    label: String,
+    span: SourceSpan,
+    source: NamedSource<String>,
+}
+
+impl fmt::Display for TextDiagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for TextDiagnostic {}
+
+impl Diagnostic for TextDiagnostic {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        Some(Box::new(self.code))
+    }
+
+    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
+        Some(&self.source)
+    }
+
+    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
+        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(
+            Some(self.label.clone()),
+            self.span,
+        ))))
+    }
+}
+
+/// An input error (exit 31) at `line` (1-based; 0: none known) and `column` (1-based;
+/// 0: the whole line) of `text`, naming `field`.
+pub fn text_failure(
+    path: &Path,
+    text: &str,
+    code: &'static str,
+    line: usize,
+    column: usize,
+    field: &str,
+    message: &str,
+) -> Failure {
+    let label = if field.is_empty() {
+        "here".to_string()
+    } else {
+        format!("field `{field}`")
+    };
+    let Some(start) = line_start(text, line) else {
+        let what = if field.is_empty() {
+            String::new()
+        } else {
+            format!(", field `{field}`")
+        };
+        return Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!("{}{what}: {message}", path.display()),
+        );
+    };
+    let rest = &text[start..];
+    let line_text = rest.split('\n').next().unwrap_or("").trim_end_matches('\r');
+    let (offset, width) = if column == 0 {
+        let indent = line_text.len() - line_text.trim_start().len();
+        (indent, line_text.trim().len())
+    } else {
+        let at = (column - 1).min(line_text.len());
+        let token = line_text[at..]
+            .find(|c: char| c.is_whitespace() || c == ',')
+            .unwrap_or(line_text.len() - at);
+        (at, token.max(1).min(line_text.len().saturating_sub(at)))
+    };
+    let diagnostic = TextDiagnostic {
+        code,
+        message: message.to_string(),
+        label,
+        span: (start + offset, width).into(),
+        source: NamedSource::new(path.display().to_string(), text.to_string()),
+    };
+    Failure {
+        code: ExitCode::INPUT_ERROR,
+        text: render(&diagnostic),
+    }
+}
+
+fn line_start(text: &str, line: usize) -> Option<usize> {
+    if line == 0 {
+        return None;
+    }
+    let mut start = 0;
+    for _ in 1..line {
+        start += text[start..].find('\n')? + 1;
+    }
+    (start <= text.len()).then_some(start)
+}
+
+/// The grounding configuration: the file's, or the defaults.
+pub fn config(path: Option<&Path>) -> Result<GroundingConfig, Failure> {
+    let Some(path) = path else {
+        return Ok(GroundingConfig::default());
+    };
+    let text = input::read_text(path)?;
+    GroundingConfig::from_toml(&text).map_err(|e| {
+        text_failure(
+            path,
+            &text,
+            "grounding::config",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        )
+    })
+}
+
+/// A decision tree file.
+pub fn decision_tree(path: &Path) -> Result<DecisionTree, Failure> {
+    let text = input::read_text(path)?;
+    DecisionTree::from_json(&text).map_err(|e| {
+        text_failure(
+            path,
+            &text,
+            "segment::tree",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        )
+    })
+}
+
+/// The activity tree: the file's, or the paper's Table 1.
+pub fn activity_tree(path: Option<&Path>) -> Result<ActivityTree, Failure> {
+    let Some(path) = path else {
+        return Ok(ActivityTree::table_one());
+    };
+    let tree = decision_tree(path)?;
+    ActivityTree::new(tree).map_err(|e| {
+        let text = std::fs::read_to_string(path).unwrap_or_default();
+        text_failure(
+            path,
+            &text,
+            "segment::tree",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        )
+    })
+}
+
+/// Whether a path names an ARFF table (by its extension).
+pub fn is_arff(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("arff"))
+}
+
+/// An ARFF table, read and checked; its text is returned for later errors.
+pub fn arff_table(path: &Path) -> Result<(segment::ArffTable, String), Failure> {
+    let text = input::read_text(path)?;
+    let table = segment::read_arff(&text).map_err(|e| arff_failure(path, &text, &e))?;
+    Ok((table, text))
+}
+
+/// The failure for an ARFF error.
+pub fn arff_failure(path: &Path, text: &str, e: &segment::ArffError) -> Failure {
+    text_failure(
+        path,
+        text,
+        "segment::arff",
+        e.line,
+        e.column,
+        &e.field,
+        &e.message,
+    )
+}
+
+/// An ARFF hand-state table as frames; its warnings are printed on standard error.
+pub fn hand_frames(path: &Path) -> Result<HandFrames, Failure> {
+    let (table, text) = arff_table(path)?;
+    let frames = table
+        .hand_frames(ARFF_FRAME_RATE)
+        .map_err(|e| arff_failure(path, &text, &e))?;
+    warn(path, &frames.warnings);
+    Ok(frames)
+}
+
+/// Prints warnings about what an ARFF reader accepted.
+pub fn warn(path: &Path, warnings: &[segment::ArffWarning]) {
+    for w in warnings {
+        eprintln!("warning: {}:{}: {}", path.display(), w.line, w.message);
+    }
+}
+
+/// A recording grounded and segmented.
+#[derive(Debug)]
+pub struct Segmented {
+    pub header: Header,
+    pub space: grounding::FactSpace,
+    pub segments: Vec<Segment>,
+    pub frames: u64,
+    pub duration: f64,
+}
+
+/// Reads a recording, grounds it and segments it; `each` sees every frame read and the
+/// grounder after it (its signals), `grounded` every grounded frame.
+pub fn segment_recording(
+    path: &Path,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+    mut each: impl FnMut(&Frame, &Grounder),
+    mut grounded: impl FnMut(&GroundedFrame<'_>),
+) -> Result<Segmented, Failure> {
+    let mut reader = recording_input::open(path)?;
+    let header = reader.header().clone();
+    let mut grounder = Grounder::new(&header, config);
+    let hands = grounder.space().hands().to_vec();
+    let mut segmenter = Segmenter::new(&hands, tree.clone(), config.min_duration);
+    let mut frame = Frame::default();
+    let (mut frames, mut first, mut last) = (0u64, None, 0.0);
+    loop {
+        match reader.read_frame(&mut frame) {
+            Ok(true) => {}
+            Ok(false) => break,
+            Err(e) => return Err(recording_input::recording_failure(path, &e)),
+        }
+        frames += 1;
+        first.get_or_insert(frame.time);
+        last = frame.time;
+        grounder.push(&frame, &mut |g| {
+            segmenter.push_grounded(g);
+            grounded(g);
+        });
+        each(&frame, &grounder);
+    }
+    grounder.finish(&mut |g| {
+        segmenter.push_grounded(g);
+        grounded(g);
+    });
+    Ok(Segmented {
+        space: grounder.space().clone(),
+        header,
+        segments: segmenter.finish(),
+        frames,
+        duration: last - first.unwrap_or(last),
+    })
+}
+
+/// The ground truth beside a simulated recording (`NAME.truth.jsonl` for `NAME.jsonl`).
+pub fn truth_path(recording: &Path) -> PathBuf {
+    let name = recording
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let stem = name.strip_suffix(".jsonl").unwrap_or(&name);
+    recording.with_file_name(format!("{stem}.truth.jsonl"))
+}
+
+/// Reads the ground truth of a recording: per frame and hand, the activity's name.
+pub fn read_truth(recording: &Path, header: &Header) -> Result<Vec<Vec<String>>, Failure> {
+    let path = truth_path(recording);
+    let file = std::fs::File::open(&path).map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!(
+                "cannot read {} (the ground truth of {}, needed for its labels): {e}",
+                path.display(),
+                recording.display()
+            ),
+        )
+    })?;
+    let (_, frames) = simulate::read_truth(std::io::BufReader::new(file), header).map_err(|e| {
+        Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!("{}:{}: {}", path.display(), e.line, e.message),
+        )
+    })?;
+    Ok(frames
+        .iter()
+        .map(|f| {
+            f.hands
+                .iter()
+                .map(|h| h.activity.name().to_string())
+                .collect()
+        })
+        .collect())
+}

@@ -1,0 +1,381 @@
+//! Segmentation: each hand on its own, a segment where its tuple (handMove, actedOn is an
+//! object, inHand is an object) stays the same; segments shorter than the minimum merge
+//! into a neighbour.
+
+use grounding::{GroundedFrame, HandFacts, State};
+use recording::EntityId;
+
+use crate::tree::{Activity, ActivityTree};
+
+/// A stretch of one hand's time with one tuple, classified.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    /// The hand.
+    pub hand: EntityId,
+    /// Time of its first frame (s).
+    pub start: f64,
+    /// Time of its last frame (s).
+    pub end: f64,
+    /// Number of frames.
+    pub frames: u64,
+    /// The activity (the majority of its frames' classes).
+    pub activity: Activity,
+    /// The tuple: `handMove`.
+    pub moving: bool,
+    /// The object acted on at the segment's last frame, if any.
+    pub acted_on: Option<EntityId>,
+    /// The object in hand at the segment's last frame, if any.
+    pub in_hand: Option<EntityId>,
+    /// The facts at the last frame before the segment (for the first segment: at its
+    /// first frame): the state its activity starts from.
+    pub start_state: State,
+    /// The facts at its last frame.
+    pub end_state: State,
+}
+
+impl Segment {
+    /// Seconds from the first to the last frame.
+    pub fn duration(&self) -> f64 {
+        self.end - self.start
+    }
+}
+
+/// Tolerance on durations: timestamps are written to the microsecond.
+const EPSILON: f64 = 1e-7;
+
+#[derive(Debug, Clone)]
+struct Run {
+    tuple: u8,
+    start: f64,
+    end: f64,
+    /// When the next run starts (its duration is `next - start`).
+    next: f64,
+    frames: u64,
+    votes: [u32; 5],
+    activity: Activity,
+    moving: bool,
+    acted_on: Option<EntityId>,
+    in_hand: Option<EntityId>,
+    start_state: State,
+    end_state: State,
+}
+
+impl Run {
+    fn absorb_after(&mut self, later: Run) {
+        self.end = later.end;
+        self.next = later.next;
+        self.frames += later.frames;
+        self.end_state = later.end_state;
+    }
+
+    fn absorb_before(&mut self, earlier: Run) {
+        self.start = earlier.start;
+        self.frames += earlier.frames;
+        self.start_state = earlier.start_state;
+    }
+
+    fn into_segment(self, hand: EntityId) -> Segment {
+        Segment {
+            hand,
+            start: self.start,
+            end: self.end,
+            frames: self.frames,
+            activity: self.activity,
+            moving: self.moving,
+            acted_on: self.acted_on,
+            in_hand: self.in_hand,
+            start_state: self.start_state,
+            end_state: self.end_state,
+        }
+    }
+}
+
+#[derive(Debug, Clone)]
+struct HandSegmenter {
+    hand: EntityId,
+    current: Option<Run>,
+    kept: Option<Run>,
+    shorts: Vec<Run>,
+}
+
+/// Cuts each hand's frames into segments and classifies them, frame by frame: memory
+/// and work per frame do not grow with the recording (segments are kept as they end).
+///
+/// Merging: a segment shorter than the minimum joins its neighbours when the segments
+/// before and after it have the same tuple (all three become one); otherwise it joins
+/// the one before it (or, at the start of the recording, the one after). A merged
+/// segment keeps the tuple and activity of the long segment it joined.
+#[derive(Debug, Clone)]
+pub struct Segmenter {
+    tree: ActivityTree,
+    min: f64,
+    hands: Vec<HandSegmenter>,
+    last_state: State,
+    last_time: f64,
+    period: f64,
+    started: bool,
+    done: Vec<Segment>,
+}
+
+impl Segmenter {
+    /// A segmenter for these hands (in the order frames give them), classifying with
+    /// `tree`; segments shorter than `min_duration` (s) merge into a neighbour.
+    pub fn new(hands: &[EntityId], tree: ActivityTree, min_duration: f64) -> Segmenter {
+        Segmenter {
+            tree,
+            min: min_duration,
+            hands: hands
+                .iter()
+                .map(|&hand| HandSegmenter {
+                    hand,
+                    current: None,
+                    kept: None,
+                    shorts: Vec::new(),
+                })
+                .collect(),
+            last_state: State::default(),
+            last_time: 0.0,
+            period: 0.0,
+            started: false,
+            done: Vec::new(),
+        }
+    }
+
+    /// Adds a grounded frame.
+    pub fn push_grounded(&mut self, frame: &GroundedFrame<'_>) {
+        self.push(frame.time, frame.hands, frame.state);
+    }
+
+    /// Adds a frame: its time, per hand its facts, and the state (empty when there is no
+    /// environment, as for ARFF tables).
+    pub fn push(&mut self, time: f64, hands: &[HandFacts], state: &State) {
+        if self.started {
+            self.period = time - self.last_time;
+        }
+        for (h, facts) in self.hands.iter_mut().zip(hands) {
+            let tuple = u8::from(facts.moving)
+                | u8::from(facts.acted_on.is_some()) << 1
+                | u8::from(facts.in_hand.is_some()) << 2;
+            let activity = self.tree.classify(facts);
+            match &mut h.current {
+                Some(run) if run.tuple == tuple => {
+                    run.end = time;
+                    run.frames += 1;
+                    run.votes[activity.index()] += 1;
+                    if facts.acted_on.is_some() {
+                        run.acted_on = facts.acted_on;
+                    }
+                    if facts.in_hand.is_some() {
+                        run.in_hand = facts.in_hand;
+                    }
+                }
+                _ => {
+                    let start_state = if self.started {
+                        self.last_state.clone()
+                    } else {
+                        state.clone()
+                    };
+                    if let Some(mut run) = h.current.take() {
+                        run.next = time;
+                        run.end_state = self.last_state.clone();
+                        accept(h, run, self.min, &mut self.done);
+                    }
+                    let mut votes = [0; 5];
+                    votes[activity.index()] = 1;
+                    h.current = Some(Run {
+                        tuple,
+                        start: time,
+                        end: time,
+                        next: time,
+                        frames: 1,
+                        votes,
+                        activity,
+                        moving: facts.moving,
+                        acted_on: facts.acted_on,
+                        in_hand: facts.in_hand,
+                        start_state,
+                        end_state: State::default(),
+                    });
+                }
+            }
+        }
+        self.last_state.copy_from(state);
+        self.last_time = time;
+        self.started = true;
+    }
+
+    /// Ends the recording and returns every segment, sorted by start, then hand.
+    pub fn finish(mut self) -> Vec<Segment> {
+        for h in &mut self.hands {
+            if let Some(mut run) = h.current.take() {
+                run.next = run.end + self.period;
+                run.end_state = self.last_state.clone();
+                accept(h, run, self.min, &mut self.done);
+            }
+            let shorts = std::mem::take(&mut h.shorts);
+            match h.kept.take() {
+                Some(mut kept) => {
+                    for s in shorts {
+                        kept.absorb_after(s);
+                    }
+                    self.done.push(kept.into_segment(h.hand));
+                }
+                None => {
+                    // Nothing long: the whole recording is one segment, classified as its
+                    // longest part.
+                    let mut iter = shorts.into_iter();
+                    if let Some(mut all) = iter.next() {
+                        let mut longest = (all.next - all.start, all.activity, all.tuple);
+                        for s in iter {
+                            if s.next - s.start > longest.0 {
+                                longest = (s.next - s.start, s.activity, s.tuple);
+                            }
+                            all.absorb_after(s);
+                        }
+                        all.activity = longest.1;
+                        all.tuple = longest.2;
+                        self.done.push(all.into_segment(h.hand));
+                    }
+                }
+            }
+        }
+        self.done
+            .sort_by(|a, b| a.start.total_cmp(&b.start).then(a.hand.cmp(&b.hand)));
+        self.done
+    }
+}
+
+fn classify(run: &mut Run) {
+    let mut best = 0;
+    for (i, &v) in run.votes.iter().enumerate() {
+        if v > run.votes[best] {
+            best = i;
+        }
+    }
+    run.activity = Activity::ALL[best];
+}
+
+/// Takes a closed run: keeps it, or holds it back while it is short.
+fn accept(h: &mut HandSegmenter, mut run: Run, min: f64, done: &mut Vec<Segment>) {
+    classify(&mut run);
+    if run.next - run.start < min - EPSILON {
+        h.shorts.push(run);
+        return;
+    }
+    let shorts = std::mem::take(&mut h.shorts);
+    match h.kept.take() {
+        Some(mut kept) if kept.tuple == run.tuple => {
+            for s in shorts {
+                kept.absorb_after(s);
+            }
+            kept.absorb_after(run);
+            h.kept = Some(kept);
+        }
+        Some(mut kept) => {
+            for s in shorts {
+                kept.absorb_after(s);
+            }
+            done.push(kept.into_segment(h.hand));
+            h.kept = Some(run);
+        }
+        None => {
+            for s in shorts.into_iter().rev() {
+                run.absorb_before(s);
+            }
+            h.kept = Some(run);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn facts(moving: bool, acted: bool, held: bool) -> HandFacts {
+        HandFacts {
+            moving,
+            open: None,
+            acted_on: acted.then_some(EntityId(2)),
+            in_hand: held.then_some(EntityId(3)),
+        }
+    }
+
+    /// Runs of (frames, tuple) at 0.01 s per frame, one hand.
+    fn segment(runs: &[(usize, (bool, bool, bool))]) -> Vec<(Activity, f64, f64)> {
+        let mut s = Segmenter::new(&[EntityId(0)], ActivityTree::table_one(), 0.05);
+        let mut t = 0.0;
+        for &(n, (m, a, h)) in runs {
+            for _ in 0..n {
+                s.push(t, &[facts(m, a, h)], &State::default());
+                t += 0.01;
+            }
+        }
+        s.finish()
+            .into_iter()
+            .map(|g| {
+                (
+                    g.activity,
+                    (g.start * 100.0).round(),
+                    (g.end * 100.0).round(),
+                )
+            })
+            .collect()
+    }
+
+    const IDLE: (bool, bool, bool) = (false, false, false);
+    const REACH: (bool, bool, bool) = (true, true, false);
+    const TAKE: (bool, bool, bool) = (false, false, true);
+    const PUT: (bool, bool, bool) = (true, false, true);
+
+    #[test]
+    fn a_segment_per_tuple() {
+        let got = segment(&[(10, IDLE), (10, REACH), (10, TAKE), (10, PUT)]);
+        use Activity::*;
+        assert_eq!(
+            got,
+            [
+                (Idle, 0.0, 9.0),
+                (Reach, 10.0, 19.0),
+                (Take, 20.0, 29.0),
+                (Put, 30.0, 39.0)
+            ]
+        );
+    }
+
+    #[test]
+    fn short_segments_merge_into_a_neighbour() {
+        use Activity::*;
+        // Between equal neighbours: all three join.
+        let got = segment(&[(10, PUT), (2, TAKE), (10, PUT)]);
+        assert_eq!(got, [(Put, 0.0, 21.0)]);
+        // Between different ones: into the one before.
+        let got = segment(&[(10, REACH), (3, IDLE), (10, TAKE)]);
+        assert_eq!(got, [(Reach, 0.0, 12.0), (Take, 13.0, 22.0)]);
+        // At the start: into the one after.
+        let got = segment(&[(2, REACH), (10, TAKE)]);
+        assert_eq!(got, [(Take, 0.0, 11.0)]);
+    }
+
+    #[test]
+    fn segments_keep_the_states_around_them() {
+        let mut s = Segmenter::new(&[EntityId(0)], ActivityTree::table_one(), 0.0);
+        let state = |w: u64| State::from_words(vec![w]);
+        for (i, (f, w)) in [(IDLE, 1), (IDLE, 2), (REACH, 3), (REACH, 4)]
+            .iter()
+            .enumerate()
+        {
+            s.push(i as f64, &[facts(f.0, f.1, f.2)], &state(*w));
+        }
+        let got = s.finish();
+        assert_eq!(got.len(), 2);
+        assert_eq!(
+            (&got[0].start_state, &got[0].end_state),
+            (&state(1), &state(2))
+        );
+        assert_eq!(
+            (&got[1].start_state, &got[1].end_state),
+            (&state(2), &state(4))
+        );
+        assert_eq!(got[1].acted_on, Some(EntityId(2)));
+    }
+}

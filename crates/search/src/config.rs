@@ -250,12 +250,16 @@ fn write_ipdb_options(
             v.to_string()
         }
     };
-    let seconds = |t: Option<Duration>| t.map_or("infinity".to_string(), |t| t.as_secs_f64().to_string());
+    let seconds =
+        |t: Option<Duration>| t.map_or("infinity".to_string(), |t| t.as_secs_f64().to_string());
     if config.pdb_max_size != default.pdb_max_size {
         options.push(format!("pdb_max_size={}", int(config.pdb_max_size)));
     }
     if config.collection_max_size != default.collection_max_size {
-        options.push(format!("collection_max_size={}", int(config.collection_max_size)));
+        options.push(format!(
+            "collection_max_size={}",
+            int(config.collection_max_size)
+        ));
     }
     if config.num_samples != default.num_samples {
         options.push(format!("num_samples={}", config.num_samples));
@@ -487,15 +491,13 @@ fn interpret_ipdb(term: &Term, with_pruning: bool) -> Result<IpdbConfig, ConfigE
         config.pdb_max_size = positive(function, "pdb_max_size", integer(function, v, true)?)?;
     }
     if let Some(v) = args.take("collection_max_size")? {
-        config.collection_max_size = positive(
-            function,
-            "collection_max_size",
-            integer(function, v, true)?,
-        )?;
+        config.collection_max_size =
+            positive(function, "collection_max_size", integer(function, v, true)?)?;
     }
     if let Some(v) = args.take("num_samples")? {
         let n = positive(function, "num_samples", integer(function, v, false)?)?;
-        config.num_samples = u32::try_from(n).map_err(|_| invalid(function, "`num_samples` is too large"))?;
+        config.num_samples =
+            u32::try_from(n).map_err(|_| invalid(function, "`num_samples` is too large"))?;
     }
     if let Some(v) = args.take("min_improvement")? {
         let n = positive(function, "min_improvement", integer(function, v, false)?)?;
@@ -663,7 +665,10 @@ fn seconds(function: &str, value: &Value) -> Result<Option<Duration>, ConfigErro
 /// A list of variable indices: `[0, 1]`.
 fn variables(function: &str, value: &Value) -> Result<Vec<u32>, ConfigError> {
     let Value::List(items) = value else {
-        return Err(invalid(function, "expected a list of variables such as [0, 1]"));
+        return Err(invalid(
+            function,
+            "expected a list of variables such as [0, 1]",
+        ));
     };
     items
         .iter()
@@ -962,11 +967,16 @@ mod tests {
         assert_eq!(h("astar(pdb(pattern=manual_pattern([0,1])))"), pdb(&[0, 1]));
         assert_eq!(h("astar(pdb(manual_pattern(pattern=[3])))"), pdb(&[3]));
         assert_eq!(h("astar(pdb(pattern=[]))"), pdb(&[]));
-        assert_eq!(h("astar(ipdb())"), HeuristicConfig::Ipdb(IpdbConfig::default()));
         assert_eq!(
-            h("astar(ipdb(max_time=30, pdb_max_size=2k, collection_max_size=10M, \
+            h("astar(ipdb())"),
+            HeuristicConfig::Ipdb(IpdbConfig::default())
+        );
+        assert_eq!(
+            h(
+                "astar(ipdb(max_time=30, pdb_max_size=2k, collection_max_size=10M, \
                num_samples=50, min_improvement=3, random_seed=7, \
-               max_generated_patterns=100, max_time_dominance_pruning=0.5))"),
+               max_generated_patterns=100, max_time_dominance_pruning=0.5))"
+            ),
             HeuristicConfig::Ipdb(IpdbConfig {
                 pdb_max_size: 2000,
                 collection_max_size: 10_000_000,
@@ -979,8 +989,10 @@ mod tests {
             })
         );
         assert_eq!(
-            h("astar(ipdb(random_seed=-1, max_time=infinity, collection_max_size=infinity, \
-               max_generated_patterns=infinity))"),
+            h(
+                "astar(ipdb(random_seed=-1, max_time=infinity, collection_max_size=infinity, \
+               max_generated_patterns=infinity))"
+            ),
             HeuristicConfig::Ipdb(IpdbConfig {
                 collection_max_size: u64::MAX,
                 ..IpdbConfig::default()
@@ -1082,7 +1094,10 @@ mod tests {
             err("astar(ipdb(random_seed=-2))"),
             "`ipdb`: `-2` is not a non-negative integer"
         );
-        assert_eq!(err("astar(ipdb(foo=1))"), "`ipdb` does not take the argument `foo=`");
+        assert_eq!(
+            err("astar(ipdb(foo=1))"),
+            "`ipdb` does not take the argument `foo=`"
+        );
         assert_eq!(
             err("astar(cpdbs(systematic(3)))"),
             "`systematic`: `pattern_max_size` must be 1 or 2 (larger sizes are not supported)"
@@ -1270,15 +1285,26 @@ mod tests {
                 )
             );
         }
-        let climbs = ok("astar(cpdbs(hillclimbing()))").heuristic.build(&task).unwrap();
+        let climbs = ok("astar(cpdbs(hillclimbing()))")
+            .heuristic
+            .build(&task)
+            .unwrap();
         assert!(climbs.pdb_statistics().unwrap().hill_climbing.is_some());
         // A pattern that does not fit the task.
-        let e = ok("astar(pdb([0, 3]))").heuristic.build(&task).err().unwrap();
+        let e = ok("astar(pdb([0, 3]))")
+            .heuristic
+            .build(&task)
+            .err()
+            .unwrap();
         assert_eq!(
             e.to_string(),
             "pattern variable 3 does not exist (the task has 1 variables)"
         );
-        let e = ok("astar(cpdbs([[0], [1]]))").heuristic.build(&task).err().unwrap();
+        let e = ok("astar(cpdbs([[0], [1]]))")
+            .heuristic
+            .build(&task)
+            .err()
+            .unwrap();
         assert!(matches!(e, SearchError::InvalidPattern(_)));
     }
 }

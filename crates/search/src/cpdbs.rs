@@ -56,7 +56,8 @@ impl Additivity {
     /// O(|a| * affected-together list * log |b|).
     pub(crate) fn additive(&self, a: &[VarId], b: &[VarId]) -> bool {
         a.iter().all(|v| {
-            let list = &self.together[self.start[v.index()] as usize..self.start[v.index() + 1] as usize];
+            let list =
+                &self.together[self.start[v.index()] as usize..self.start[v.index() + 1] as usize];
             list.iter().all(|&w| b.binary_search(&VarId(w)).is_err())
         })
     }
@@ -74,7 +75,13 @@ pub(crate) fn maximal_cliques(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> 
     }
     let mut out = Vec::new();
     let mut clique = Vec::new();
-    expand(adjacent, &mut clique, candidates, vec![0u64; words], &mut out);
+    expand(
+        adjacent,
+        &mut clique,
+        candidates,
+        vec![0u64; words],
+        &mut out,
+    );
     out
 }
 
@@ -116,7 +123,12 @@ fn expand(
     // Pivot: the vertex of P or X with the most neighbours in P.
     let pivot = bits(&candidates)
         .chain(bits(&excluded))
-        .max_by_key(|&u| (count_common(&adjacent[u], &candidates), std::cmp::Reverse(u)))
+        .max_by_key(|&u| {
+            (
+                count_common(&adjacent[u], &candidates),
+                std::cmp::Reverse(u),
+            )
+        })
         .unwrap_or(0);
     let branch: Vec<usize> = bits(&candidates)
         .filter(|&v| adjacent[pivot][v / 64] >> (v % 64) & 1 == 0)
@@ -163,7 +175,10 @@ pub(crate) fn systematic_patterns(task: &Task, max_size: usize) -> Vec<Vec<u32>>
     for f in &task.goal {
         is_goal[f.var.index()] = true;
     }
-    let mut out: Vec<Vec<u32>> = (0..n as u32).filter(|&v| is_goal[v as usize]).map(|v| vec![v]).collect();
+    let mut out: Vec<Vec<u32>> = (0..n as u32)
+        .filter(|&v| is_goal[v as usize])
+        .map(|v| vec![v])
+        .collect();
     if max_size < 2 {
         return out;
     }
@@ -222,8 +237,16 @@ impl std::fmt::Display for PdbStatistics {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if let Some(c) = &self.hill_climbing {
             writeln!(f, "Hill climbing iterations: {}", c.iterations)?;
-            writeln!(f, "Hill climbing generated patterns: {}", c.generated_patterns)?;
-            writeln!(f, "Hill climbing rejected patterns: {}", c.rejected_patterns)?;
+            writeln!(
+                f,
+                "Hill climbing generated patterns: {}",
+                c.generated_patterns
+            )?;
+            writeln!(
+                f,
+                "Hill climbing rejected patterns: {}",
+                c.rejected_patterns
+            )?;
             writeln!(f, "Hill climbing maximum PDB size: {}", c.max_pdb_size)?;
             writeln!(f, "Hill climbing ended: {}", c.end)?;
             writeln!(f, "Hill climbing time: {:.6}s", c.time.as_secs_f64())?;
@@ -239,15 +262,27 @@ impl std::fmt::Display for PdbStatistics {
         }
         let cliques = self.cliques + self.pruned_cliques;
         let patterns = self.patterns + self.pruned_patterns;
-        writeln!(f, "Pruned {} of {cliques} pattern cliques", self.pruned_cliques)?;
+        writeln!(
+            f,
+            "Pruned {} of {cliques} pattern cliques",
+            self.pruned_cliques
+        )?;
         writeln!(f, "Pruned {} of {patterns} PDBs", self.pruned_patterns)?;
         writeln!(
             f,
             "Dominance pruning took {:.6}s",
             self.dominance_pruning_time.as_secs_f64()
         )?;
-        writeln!(f, "Canonical PDB heuristic number of patterns: {}", self.patterns)?;
-        writeln!(f, "Canonical PDB heuristic total PDB size: {}", self.total_size)?;
+        writeln!(
+            f,
+            "Canonical PDB heuristic number of patterns: {}",
+            self.patterns
+        )?;
+        writeln!(
+            f,
+            "Canonical PDB heuristic total PDB size: {}",
+            self.total_size
+        )?;
         writeln!(
             f,
             "Canonical PDB heuristic memory: {} KB",
@@ -526,7 +561,8 @@ mod tests {
     fn brute_force(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> {
         let edge = |a: usize, b: usize| adjacent[a][b / 64] >> (b % 64) & 1 == 1;
         let is_clique = |s: u32| {
-            (0..n).all(|a| (0..n).all(|b| a == b || s >> a & 1 == 0 || s >> b & 1 == 0 || edge(a, b)))
+            (0..n)
+                .all(|a| (0..n).all(|b| a == b || s >> a & 1 == 0 || s >> b & 1 == 0 || edge(a, b)))
         };
         let mut out: Vec<Vec<u32>> = (0..1u32 << n)
             .filter(|&s| is_clique(s) && (0..n).all(|v| s >> v & 1 == 1 || !is_clique(s | 1 << v)))
@@ -544,7 +580,9 @@ mod tests {
             let mut edges = Vec::new();
             for a in 0..n {
                 for b in a + 1..n {
-                    seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                    seed = seed
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
                     if (seed >> 33) % 100 < (round as u64 * 7) % 100 {
                         edges.push((a, b));
                     }
@@ -558,8 +596,13 @@ mod tests {
         // No vertices: one empty clique (the heuristic is then 0).
         assert_eq!(maximal_cliques(0, &[]), vec![Vec::<u32>::new()]);
         // A 70-vertex complete graph crosses a word boundary.
-        let edges: Vec<_> = (0..70).flat_map(|a| (a + 1..70).map(move |b| (a, b))).collect();
-        assert_eq!(maximal_cliques(70, &graph(70, &edges)), vec![(0..70).collect::<Vec<u32>>()]);
+        let edges: Vec<_> = (0..70)
+            .flat_map(|a| (a + 1..70).map(move |b| (a, b)))
+            .collect();
+        assert_eq!(
+            maximal_cliques(70, &graph(70, &edges)),
+            vec![(0..70).collect::<Vec<u32>>()]
+        );
     }
 
     /// Variables a, b, c, d, e; goal a, b, c. `ab` changes a and b, `c-from-d` changes c
@@ -574,7 +617,10 @@ mod tests {
             cost: 1,
         };
         Task {
-            variables: ["a", "b", "c", "d", "e"].iter().map(|n| Variable::binary(n)).collect(),
+            variables: ["a", "b", "c", "d", "e"]
+                .iter()
+                .map(|n| Variable::binary(n))
+                .collect(),
             mutexes: vec![],
             initial_state: vec![1; 5],
             goal: vec![fact(0), fact(1), fact(2)],
@@ -612,13 +658,17 @@ mod tests {
         assert_eq!(h.evaluate(&[1, 1, 1, 1, 1]), None);
         assert_eq!(h.evaluate(&[1, 1, 1, 0, 1]), Some(2));
         assert_eq!(h.evaluate(&[0, 0, 1, 0, 1]), Some(1));
-        let mut pruned = CanonicalPdbs::new(&t, h.pdbs().to_vec(), Some(Duration::from_secs(9)), "cpdbs");
+        let mut pruned =
+            CanonicalPdbs::new(&t, h.pdbs().to_vec(), Some(Duration::from_secs(9)), "cpdbs");
         // Only {ab, cd} is left, renumbered.
         assert_eq!(pruned.cliques().collect::<Vec<_>>(), [&[0u32, 1][..]]);
         let left: Vec<&[VarId]> = pruned.pdbs().iter().map(|p| p.pattern()).collect();
         assert_eq!(left, [&p(&[0, 1])[..], &p(&[2, 3])[..]]);
         let s = pruned.statistics();
-        assert_eq!((s.patterns, s.cliques, s.pruned_cliques, s.pruned_patterns), (2, 1, 5, 3));
+        assert_eq!(
+            (s.patterns, s.cliques, s.pruned_cliques, s.pruned_patterns),
+            (2, 1, 5, 3)
+        );
         assert_eq!(s.total_size, 8);
         assert_eq!(pruned.evaluate(&[1, 1, 1, 0, 1]), Some(2));
         assert_eq!(pruned.name(), "cpdbs");
@@ -632,7 +682,10 @@ mod tests {
         // {0}, {1} additive with each other and {2}; {0, 1} additive with {2}.
         let cliques = vec![vec![0, 1, 3], vec![2, 3]];
         let far = Instant::now() + Duration::from_secs(60);
-        assert_eq!(prune_dominated(&refs, cliques.clone(), far), vec![vec![2, 3]]);
+        assert_eq!(
+            prune_dominated(&refs, cliques.clone(), far),
+            vec![vec![2, 3]]
+        );
         let cliques = vec![vec![0, 3], vec![1]];
         assert_eq!(prune_dominated(&refs, cliques.clone(), far), cliques);
     }

@@ -35,7 +35,8 @@
 //!    pattern; otherwise the climb ends.
 //!
 //! Candidates whose database would take the collection beyond `collection_max_size`
-//! abstract states are rejected when next evaluated. The climb also ends when the initial
+//! abstract states are rejected (when generated, without building their database, or
+//! when next evaluated). The climb also ends when the initial
 //! state is a dead end, at `max_time`, at the caller's deadline or memory limit, or once
 //! `max_generated_patterns` candidates were generated.
 //!
@@ -406,10 +407,20 @@ impl<'t> Climb<'t> {
             if let Some(end) = self.limit_reached() {
                 return Some(end);
             }
-            let pdb = self.build(&candidate);
-            self.generated.insert(candidate);
             self.stats.generated_patterns += 1;
             self.stats.max_pdb_size = self.stats.max_pdb_size.max(size);
+            let room = self
+                .config
+                .collection_max_size
+                .saturating_sub(self.collection_size);
+            if size > room {
+                // The room only shrinks: it would be rejected at its first evaluation.
+                self.generated.insert(candidate);
+                self.stats.rejected_patterns += 1;
+                continue;
+            }
+            let pdb = self.build(&candidate);
+            self.generated.insert(candidate);
             self.candidates.push(Some(Candidate {
                 pdb,
                 additive: Vec::new(),
@@ -580,7 +591,6 @@ impl<'t> Climb<'t> {
         }
         best
     }
-
 }
 
 /// For each candidate, the number of samples it improves (see the module
@@ -815,7 +825,8 @@ impl Walker {
 
     /// Applies operator `op`, which must be applicable.
     fn apply(&mut self, op: OpId) {
-        let range = self.effect_start[op.index()] as usize..self.effect_start[op.index() + 1] as usize;
+        let range =
+            self.effect_start[op.index()] as usize..self.effect_start[op.index() + 1] as usize;
         for i in range {
             let (var, value) = self.effects[i];
             self.set(var as usize, value);
@@ -891,7 +902,11 @@ mod tests {
     #[test]
     fn the_climb_adds_a_precondition_variable() {
         let task = Task {
-            variables: vec![Variable::binary("a"), Variable::binary("b"), Variable::binary("c")],
+            variables: vec![
+                Variable::binary("a"),
+                Variable::binary("b"),
+                Variable::binary("c"),
+            ],
             mutexes: vec![],
             initial_state: vec![0, 0, 0],
             goal: vec![Fact::new(VarId(0), 1)],
@@ -968,7 +983,10 @@ mod tests {
         for (limits, end) in [(past, ClimbEnd::TimeLimit), (tight, ClimbEnd::MemoryLimit)] {
             let h = ipdb(&task, &IpdbConfig::default(), &limits).unwrap();
             let climb = h.statistics().hill_climbing.clone().unwrap();
-            assert_eq!((climb.end, climb.generated_patterns, climb.patterns), (end, 0, 1));
+            assert_eq!(
+                (climb.end, climb.generated_patterns, climb.patterns),
+                (end, 0, 1)
+            );
         }
         // What the CLI prints.
         let config = IpdbConfig {
@@ -977,10 +995,22 @@ mod tests {
         };
         let shown = ipdb(&task, &config, &SearchLimits::default()).unwrap();
         let text = shown.statistics().to_string();
-        assert!(text.starts_with("Hill climbing iterations: 2\nHill climbing generated patterns: 1\n"), "{text}");
-        assert!(text.contains("\nHill climbing ended: converged\n"), "{text}");
-        assert!(text.contains("\nPruned 1 of 2 pattern cliques\nPruned 1 of 2 PDBs\n"), "{text}");
-        assert!(text.contains("\nCanonical PDB heuristic number of patterns: 1\n"), "{text}");
+        assert!(
+            text.starts_with("Hill climbing iterations: 2\nHill climbing generated patterns: 1\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains("\nHill climbing ended: converged\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains("\nPruned 1 of 2 pattern cliques\nPruned 1 of 2 PDBs\n"),
+            "{text}"
+        );
+        assert!(
+            text.contains("\nCanonical PDB heuristic number of patterns: 1\n"),
+            "{text}"
+        );
         assert!(!text.ends_with('\n'));
         // A dead initial state ends the climb.
         let mut dead = task.clone();
@@ -1007,7 +1037,11 @@ mod tests {
                 .map(|s| {
                     let h = cliques
                         .iter()
-                        .map(|c| c.iter().map(|&m| u64::from(values[m as usize * samples + s])).sum())
+                        .map(|c| {
+                            c.iter()
+                                .map(|&m| u64::from(values[m as usize * samples + s]))
+                                .sum()
+                        })
                         .max()
                         .unwrap_or(0);
                     (rng.below(10) > 0).then_some(h)
@@ -1017,11 +1051,27 @@ mod tests {
                 .map(|_| (0..patterns as u32).filter(|_| rng.below(4) == 0).collect())
                 .collect();
             let candidates = 1 + rng.below(10) as usize;
-            let keys: Vec<usize> = (0..candidates).map(|_| rng.below(groups.len() as u32) as usize).collect();
-            let candidate_h: Vec<u32> = (0..candidates * samples)
-                .map(|_| if rng.below(20) == 0 { DEAD } else { value(&mut rng) * 2 })
+            let keys: Vec<usize> = (0..candidates)
+                .map(|_| rng.below(groups.len() as u32) as usize)
                 .collect();
-            let got = count_improvements(&cliques, &values, &sample_h, patterns, &groups, &keys, &candidate_h);
+            let candidate_h: Vec<u32> = (0..candidates * samples)
+                .map(|_| {
+                    if rng.below(20) == 0 {
+                        DEAD
+                    } else {
+                        value(&mut rng) * 2
+                    }
+                })
+                .collect();
+            let got = count_improvements(
+                &cliques,
+                &values,
+                &sample_h,
+                patterns,
+                &groups,
+                &keys,
+                &candidate_h,
+            );
             for (i, &k) in keys.iter().enumerate() {
                 let expected: u64 = (0..samples)
                     .filter(|&s| {
@@ -1036,7 +1086,8 @@ mod tests {
                             })
                             .max()
                             .unwrap_or(0);
-                        h == DEAD || sample_h[s].is_some_and(|current| u64::from(h) + best > current)
+                        h == DEAD
+                            || sample_h[s].is_some_and(|current| u64::from(h) + best > current)
                     })
                     .count() as u64;
                 assert_eq!(got[i], expected, "round {round} candidate {i}");

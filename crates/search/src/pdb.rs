@@ -469,20 +469,28 @@ impl PdbBuilder {
         // include the other's and that costs no less adds no transition. Within each
         // delta, fewer conditions first; groups beyond 256 are left alone (quadratic).
         kept.sort_unstable_by(|a, b| {
-            (a.delta, a.end - a.start, key(a).0, a.cost).cmp(&(b.delta, b.end - b.start, key(b).0, b.cost))
+            (a.delta, a.end - a.start, key(a).0, a.cost).cmp(&(
+                b.delta,
+                b.end - b.start,
+                key(b).0,
+                b.cost,
+            ))
         });
         let mut undominated: Vec<AbstractOp> = Vec::with_capacity(kept.len());
         let mut group_start = 0;
         for op in kept {
-            if undominated.get(group_start).is_none_or(|first| first.delta != op.delta) {
+            if undominated
+                .get(group_start)
+                .is_none_or(|first| first.delta != op.delta)
+            {
                 group_start = undominated.len();
             }
             let group = &undominated[group_start..];
             let conditions = key(&op).0;
             let dominated = group.len() <= 256
-                && group.iter().any(|other| {
-                    other.cost <= op.cost && is_subset(key(other).0, conditions)
-                });
+                && group
+                    .iter()
+                    .any(|other| other.cost <= op.cost && is_subset(key(other).0, conditions));
             if !dominated {
                 undominated.push(op);
             }
@@ -568,8 +576,12 @@ impl PdbBuilder {
         self.children.clear();
         self.leaf_ops.clear();
         self.items.clear();
-        self.items
-            .extend(self.ops.iter().enumerate().map(|(i, op)| (i as u32, op.start)));
+        self.items.extend(
+            self.ops
+                .iter()
+                .enumerate()
+                .map(|(i, op)| (i as u32, op.start)),
+        );
         self.nodes.push(empty_node());
         self.work.clear();
         self.work.push((0, 0, self.items.len() as u32));
@@ -632,11 +644,7 @@ impl PdbBuilder {
                 // Now group k is `sorted[counts[k - 1]..counts[k]]`.
                 this.domain = domain;
                 let period = u64::from(multipliers[pos as usize]) * u64::from(domain);
-                this.magic = if period > 1 {
-                    u64::MAX / period + 1
-                } else {
-                    0
-                };
+                this.magic = if period > 1 { u64::MAX / period + 1 } else { 0 };
                 this.children_start = self.children.len() as u32;
                 self.children
                     .resize(self.children.len() + domain as usize, NONE);
@@ -961,9 +969,18 @@ mod tests {
         big.operators.clear();
         big.goal.clear();
         let e = PatternDatabase::new(&big, &[0, 1, 2, 3]).unwrap_err();
-        assert_eq!(e.to_string(), "pattern [0, 1, 2, 3] has more than 2147483648 abstract states");
-        assert_eq!(pattern_size(&big, &[VarId(0), VarId(1)], 10_000_000), Some(1_000_000));
-        assert_eq!(pattern_size(&big, &[VarId(0), VarId(1), VarId(2)], 10_000_000), None);
+        assert_eq!(
+            e.to_string(),
+            "pattern [0, 1, 2, 3] has more than 2147483648 abstract states"
+        );
+        assert_eq!(
+            pattern_size(&big, &[VarId(0), VarId(1)], 10_000_000),
+            Some(1_000_000)
+        );
+        assert_eq!(
+            pattern_size(&big, &[VarId(0), VarId(1), VarId(2)], 10_000_000),
+            None
+        );
         let mut invalid = t;
         invalid.goal.push(Fact::new(VarId(5), 0));
         assert!(matches!(
@@ -981,7 +998,9 @@ mod tests {
         for round in 0..150 {
             let mut t = random_task(&mut rng, 2 + round % 5, 4 + round % 20);
             t.use_costs = true;
-            let pattern: Vec<u32> = (0..t.variables.len() as u32).filter(|_| rng.below(2) == 0).collect();
+            let pattern: Vec<u32> = (0..t.variables.len() as u32)
+                .filter(|_| rng.below(2) == 0)
+                .collect();
             let base: Vec<u64> = t.operators.iter().map(|o| o.cost).collect();
             let mut tables = Vec::new();
             // Costs 0..=3: buckets; times 2000 or 2^20: the radix heap.
@@ -990,7 +1009,9 @@ mod tests {
                     o.cost = c * scale;
                 }
                 let pdb = PatternDatabase::new(&t, &pattern).unwrap();
-                let table: Vec<Option<u64>> = (0..pdb.size()).map(|i| pdb.value_at(i).map(|d| d / scale)).collect();
+                let table: Vec<Option<u64>> = (0..pdb.size())
+                    .map(|i| pdb.value_at(i).map(|d| d / scale))
+                    .collect();
                 tables.push(table);
             }
             // Unit costs: breadth-first search.

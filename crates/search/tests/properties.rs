@@ -349,7 +349,12 @@ fn reference_canonical(task: &Task, patterns: &[Vec<usize>], state: &[u32]) -> O
                 })
             })
         })
-        .map(|set| (0..n).filter(|&i| set >> i & 1 == 1).map(|i| values[i]).sum())
+        .map(|set| {
+            (0..n)
+                .filter(|&i| set >> i & 1 == 1)
+                .map(|i| values[i])
+                .sum()
+        })
         .max()
 }
 

@@ -48,14 +48,15 @@ impl Failure {
     }
 }
 
+/// A message about a span of a source text, rendered with the line and an underline.
 #[derive(Debug)]
-struct SourceDiagnostic {
-    message: String,
-    code: &'static str,
-    help: Option<String>,
-    label: String,
-    span: SourceSpan,
-    source: NamedSource<String>,
+pub(crate) struct SourceDiagnostic {
+    pub(crate) message: String,
+    pub(crate) code: &'static str,
+    pub(crate) help: Option<String>,
+    pub(crate) label: String,
+    pub(crate) span: SourceSpan,
+    pub(crate) source: NamedSource<String>,
 }
 
 impl fmt::Display for SourceDiagnostic {

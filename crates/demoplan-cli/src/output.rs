@@ -8,26 +8,7 @@ use crate::exit::ExitCode;
 /// Writes through a temporary file in the same folder and a rename, so that a crash never
 /// leaves a half-written file.
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.demoplan-tmp-{}", std::process::id()));
-    let fail = |e: std::io::Error| {
-        Failure::plain(
-            ExitCode::CRITICAL_ERROR,
-            format!("cannot write {}: {e}", path.display()),
-        )
-    };
-    std::fs::write(&tmp, text).map_err(fail)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
+    write_atomically_with(path, |out| out.write_all(text.as_bytes()))
 }
 
 /// Like [`write_atomically`], for output produced piece by piece: `produce` writes into a

@@ -2,56 +2,20 @@
 //! trees and ARFF tables (errors with file, line and field, exit 31), and running
 //! grounding and segmentation over a recording.
 
-use std::fmt;
 use std::path::{Path, PathBuf};
 
 use grounding::{GroundedFrame, Grounder, GroundingConfig};
-use miette::{Diagnostic, LabeledSpan, NamedSource, SourceSpan};
+use miette::NamedSource;
 use recording::{Frame, Header};
 use segment::{ActivityTree, DecisionTree, HandFrames, Segment, Segmenter};
 
-use crate::diagnostic::{render, Failure};
+use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
 use crate::input;
 use crate::recording_input;
 
 /// Frame rate assumed for ARFF tables without a time attribute.
 pub const ARFF_FRAME_RATE: f64 = 30.0;
-
-/// An error at a line (and column) of a text file, rendered with the line underlined.
-#[derive(Debug)]
-struct TextDiagnostic {
-    code: &'static str,
-    message: String,
-    label: String,
-    span: SourceSpan,
-    source: NamedSource<String>,
-}
-
-impl fmt::Display for TextDiagnostic {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for TextDiagnostic {}
-
-impl Diagnostic for TextDiagnostic {
-    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        Some(Box::new(self.code))
-    }
-
-    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
-        Some(&self.source)
-    }
-
-    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(
-            Some(self.label.clone()),
-            self.span,
-        ))))
-    }
-}
 
 /// An input error (exit 31) at `line` (1-based; 0: none known) and `column` (1-based;
 /// 0: the whole line) of `text`, naming `field`.
@@ -92,9 +56,10 @@ pub fn text_failure(
             .unwrap_or(line_text.len() - at);
         (at, token.max(1).min(line_text.len().saturating_sub(at)))
     };
-    let diagnostic = TextDiagnostic {
+    let diagnostic = SourceDiagnostic {
         code,
         message: message.to_string(),
+        help: None,
         label,
         span: (start + offset, width).into(),
         source: NamedSource::new(path.display().to_string(), text.to_string()),

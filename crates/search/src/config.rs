@@ -90,8 +90,7 @@ pub enum PatternCollectionConfig {
     Manual(Vec<Vec<u32>>),
     /// `systematic(n)`: every interesting pattern of at most `n` variables (`n` is 1 or
     /// 2; Pommerening, Röger and Helmert, IJCAI 2013): of one variable the goal
-    /// variables, of two a goal variable with a precondition-to-effect predecessor, or
-    /// two goal variables an operator connects.
+    /// variables, of two a goal variable with one of its causal-graph predecessors.
     Systematic(u32),
     /// `hillclimbing(...)`, with the options of `ipdb()` (whose
     /// `max_time_dominance_pruning` is ignored here: `cpdbs`' own option counts).

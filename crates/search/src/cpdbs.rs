@@ -163,12 +163,12 @@ pub(crate) fn additive_cliques(additivity: &Additivity, patterns: &[&[VarId]]) -
 }
 
 /// The *interesting* patterns (Pommerening, Röger and Helmert, IJCAI 2013) of at most
-/// `max_size` variables, for `max_size` 1 or 2 (larger sizes are treated as 2): patterns
-/// whose causal graph is weakly connected and whose every variable is a goal variable or
-/// reaches one of the pattern by precondition-to-effect arcs. Of one variable: the goal
-/// variables. Of two: two goal variables joined by an arc (precondition to effect, or two
-/// effects of one operator), and a goal variable with one of its precondition-to-effect
-/// predecessors. Singletons first, then pairs, each sorted. O(task size + pairs).
+/// `max_size` variables, for `max_size` 1 or 2 (larger sizes are treated as 2), as Fast
+/// Downward's `systematic` builds them from a goal variable and its causal-graph
+/// predecessors. Of one variable: the goal variables. Of two: a goal variable with a
+/// precondition-to-effect predecessor (an operator has a precondition on it and an effect
+/// on the goal variable) or an effect-to-effect neighbour (an operator has effects on
+/// both). Singletons first, then pairs, each sorted. O(task size + pairs).
 pub(crate) fn systematic_patterns(task: &Task, max_size: usize) -> Vec<Vec<u32>> {
     let n = task.variables.len();
     let mut is_goal = vec![false; n];
@@ -188,16 +188,11 @@ pub(crate) fn systematic_patterns(task: &Task, max_size: usize) -> Vec<Vec<u32>>
             if !is_goal[e.var.index()] {
                 continue;
             }
-            // Precondition-to-effect arcs into a goal variable.
-            for p in &op.preconditions {
-                if p.var != e.var {
-                    pairs.push((p.var.0.min(e.var.0), p.var.0.max(e.var.0)));
-                }
-            }
-            // Effect-to-effect arcs between two goal variables.
-            for other in &op.effects {
-                if other.var != e.var && is_goal[other.var.index()] {
-                    pairs.push((other.var.0.min(e.var.0), other.var.0.max(e.var.0)));
+            // Precondition-to-effect arcs into a goal variable, and effect-to-effect
+            // arcs.
+            for v in op.preconditions.iter().chain(&op.effects).map(|f| f.var) {
+                if v != e.var {
+                    pairs.push((v.0.min(e.var.0), v.0.max(e.var.0)));
                 }
             }
         }
@@ -645,7 +640,7 @@ mod tests {
         assert!(!additivity.additive(&p(&[2]), &p(&[2, 4])));
         assert_eq!(systematic_patterns(&t, 1), [vec![0], vec![1], vec![2]]);
         // Pairs: a and b (changed together), c and its precondition d; not c and e (e is
-        // no goal, and c is no precondition-to-effect descendant of e).
+        // no goal, and no predecessor of c).
         assert_eq!(
             systematic_patterns(&t, 2),
             [vec![0], vec![1], vec![2], vec![0, 1], vec![2, 3]]

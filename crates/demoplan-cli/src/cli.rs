@@ -203,4 +203,98 @@ pub enum Command {
         #[arg(long, value_name = "FILE")]
         tree: Option<PathBuf>,
     },
+    /// Learn planning operators from recordings into a library (JSON).
+    ///
+    /// Each activity (a run of one hand's segments with one class) becomes a lifted
+    /// operator; equal operators are merged and counted, and each gets the cost
+    /// ceil(lambda * (1 - count / type count)). With `--library`, the recordings are added
+    /// to an existing library; a recording already in it (same content) is not counted
+    /// again. Prints per type the operators with count and cost.
+    Learn {
+        /// Recordings (JSON Lines).
+        #[arg(value_name = "RECORDING", required = true)]
+        files: Vec<PathBuf>,
+        /// A library to add to (it may also be the output file).
+        #[arg(long, value_name = "FILE")]
+        library: Option<PathBuf>,
+        /// Where to write the library.
+        #[arg(short = 'o', long = "out", value_name = "FILE")]
+        out: PathBuf,
+        /// The largest cost, for a new library (default 100, the paper's).
+        #[arg(long, value_name = "N")]
+        lambda: Option<u32>,
+        /// Grounding thresholds as TOML.
+        #[arg(long, value_name = "FILE")]
+        config: Option<PathBuf>,
+        /// The activity tree as JSON; default: Table 1.
+        #[arg(long, value_name = "FILE")]
+        tree: Option<PathBuf>,
+    },
+    /// Print a library's operators as cards (the paper's Figure 2): preconditions and
+    /// effects side by side, count, cost and the recordings that show it.
+    Operators {
+        /// The library.
+        #[arg(value_name = "LIBRARY")]
+        library: PathBuf,
+        /// Print Markdown.
+        #[arg(long)]
+        markdown: bool,
+    },
+    /// Write the PDDL domain of a priority (the paper's OperatorSubset), or list the
+    /// priority levels (without `-o`).
+    ///
+    /// Priority N keeps, per type, the N most frequent operators and every operator tied
+    /// with the N-th. Operators that change nothing are left out unless
+    /// `--keep-without-effects`.
+    Domain {
+        /// The library.
+        #[arg(value_name = "LIBRARY")]
+        library: PathBuf,
+        /// The priority.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..), conflicts_with = "full")]
+        prio: Option<u64>,
+        /// Every operator (the full domain).
+        #[arg(long)]
+        full: bool,
+        /// Where to write the domain; without it, the levels are listed.
+        #[arg(short = 'o', long = "out", value_name = "FILE")]
+        out: Option<PathBuf>,
+        /// Keep operators that change nothing.
+        #[arg(long)]
+        keep_without_effects: bool,
+    },
+    /// Write a PDDL problem: a scene and a tower to build.
+    ///
+    /// The scene is cubes cube_1 ... cube_N on the table with both hands open and still
+    /// (`--cubes`, default 6), or the facts of one frame of a recording (`--from`). The
+    /// tower is listed bottom first; the goal is its onTop facts (the bottom cube on the
+    /// table). The paper's goals 1 to 5 are towers of 2 to 6 cubes (`--paper-goal`).
+    Problem {
+        /// The tower, bottom first: `cube_1,cube_2,cube_3`.
+        #[arg(
+            long,
+            value_name = "LIST",
+            required_unless_present = "paper_goal",
+            conflicts_with = "paper_goal"
+        )]
+        tower: Option<String>,
+        /// The paper's goal N (1 to 5): a tower of N + 1 cubes, cube_1 at the bottom.
+        #[arg(long, value_name = "N")]
+        paper_goal: Option<usize>,
+        /// Cubes on the table in the default scene.
+        #[arg(long, value_name = "N", conflicts_with = "from", value_parser = clap::value_parser!(u64).range(2..=64))]
+        cubes: Option<u64>,
+        /// Ground the scene from a recording's frame.
+        #[arg(long, value_name = "RECORDING")]
+        from: Option<PathBuf>,
+        /// The frame of `--from` (counting from 0; default 0).
+        #[arg(long, value_name = "K", requires = "from")]
+        frame: Option<u64>,
+        /// Grounding thresholds as TOML, for `--from`.
+        #[arg(long, value_name = "FILE", requires = "from")]
+        config: Option<PathBuf>,
+        /// Where to write the problem.
+        #[arg(short = 'o', long = "out", value_name = "FILE")]
+        out: PathBuf,
+    },
 }

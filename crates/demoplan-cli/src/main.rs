@@ -130,5 +130,53 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             config,
             tree,
         }),
+        cli::Command::Learn {
+            files,
+            library,
+            out,
+            lambda,
+            config,
+            tree,
+        } => commands::library::learn(commands::library::LearnArgs {
+            files,
+            library,
+            out,
+            lambda,
+            config,
+            tree,
+        }),
+        cli::Command::Operators { library, markdown } => {
+            commands::library::operators(commands::library::OperatorsArgs { library, markdown })
+        }
+        cli::Command::Domain {
+            library,
+            prio,
+            full,
+            out,
+            keep_without_effects,
+        } => commands::library::run_domain(commands::library::DomainArgs {
+            library,
+            prio: prio.map(|p| p as usize),
+            full,
+            out,
+            keep_without_effects,
+        }),
+        cli::Command::Problem {
+            tower,
+            paper_goal,
+            cubes,
+            from,
+            frame,
+            config,
+            out,
+        } => commands::library::run_problem(commands::library::ProblemArgs {
+            tower,
+            paper_goal,
+            cubes: cubes.map(|c| c as usize),
+            from,
+            frame,
+            out,
+            config,
+        }),
     }
 }

@@ -5,6 +5,7 @@ pub mod classify;
 pub mod demo_input;
 pub mod fmt;
 pub mod inspect;
+pub mod library;
 pub mod plan;
 pub mod segment;
 pub mod simulate;

@@ -1,0 +1,526 @@
+//! The operator library on the command line: `learn`, `operators`, `domain`, `problem`.
+
+use std::fmt::Write as _;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use learn::{
+    domain, levels, operator_subset, paper_goal_tower, per_type, problem, tower_goal, Added,
+    DomainOptions, Library, Ranked, RecordingInfo, Scene, StableHasher, TYPE_ORDER,
+};
+
+use crate::commands::demo_input;
+use crate::diagnostic::Failure;
+use crate::exit::ExitCode;
+use crate::input;
+use crate::output::write_atomically;
+
+/// Reads a library file: a missing file is a command line error (36), a damaged or newer
+/// one an input error (31) that names the line.
+pub fn read_library(path: &Path) -> Result<Library, Failure> {
+    let text = input::read_text(path)?;
+    Library::from_json(&text).map_err(|e| {
+        demo_input::text_failure(
+            path,
+            &text,
+            "learn::library",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        )
+    })
+}
+
+/// The content hash of a file, read in pieces.
+fn file_hash(path: &Path) -> Result<String, Failure> {
+    let mut file = std::fs::File::open(path).map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!("cannot read {}: {e}", path.display()),
+        )
+    })?;
+    let mut hasher = StableHasher::new();
+    let mut buffer = vec![0u8; 1 << 20];
+    loop {
+        let n = file.read(&mut buffer).map_err(|e| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!("cannot read {}: {e}", path.display()),
+            )
+        })?;
+        if n == 0 {
+            break;
+        }
+        hasher.write(&buffer[..n]);
+    }
+    Ok(format!("{:016x}", hasher.finish()))
+}
+
+/// The command line of `learn`.
+#[derive(Debug)]
+pub struct LearnArgs {
+    pub files: Vec<PathBuf>,
+    pub library: Option<PathBuf>,
+    pub out: PathBuf,
+    pub lambda: Option<u32>,
+    pub config: Option<PathBuf>,
+    pub tree: Option<PathBuf>,
+}
+
+pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
+    let mut library = match &args.library {
+        Some(path) => {
+            let library = read_library(path)?;
+            if let Some(l) = args.lambda.filter(|&l| l != library.lambda) {
+                return Err(Failure::plain(
+                    ExitCode::USAGE,
+                    format!(
+                        "--lambda {l} differs from the library's lambda {} ({}); costs of one \
+                         library use one lambda",
+                        library.lambda,
+                        path.display()
+                    ),
+                ));
+            }
+            library
+        }
+        None => Library::new(args.lambda.unwrap_or(learn::DEFAULT_LAMBDA)),
+    };
+    let config = demo_input::config(args.config.as_deref())?;
+    let tree = demo_input::activity_tree(args.tree.as_deref())?;
+    let mut log = String::new();
+    for path in &args.files {
+        let hash = file_hash(path)?;
+        if library.has_recording(&hash) {
+            let _ = writeln!(
+                log,
+                "{}: already in the library (same content), not counted again",
+                path.display()
+            );
+            continue;
+        }
+        let segmented = demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})?;
+        let info = RecordingInfo {
+            hash,
+            id: segmented.header.id.clone(),
+            participant: segmented.header.participant.clone(),
+            source: path.display().to_string(),
+            frames: segmented.frames,
+            segments: 0,
+        };
+        match library.add_recording(
+            info,
+            &segmented.header,
+            &segmented.space,
+            &segmented.segments,
+        ) {
+            Added::Counted {
+                segments,
+                new_operators,
+            } => {
+                let _ = writeln!(
+                    log,
+                    "{}: {segments} activities, {new_operators} new operator(s)",
+                    path.display()
+                );
+            }
+            Added::AlreadyCounted => {
+                let _ = writeln!(
+                    log,
+                    "{}: already in the library (same content), not counted again",
+                    path.display()
+                );
+            }
+        }
+    }
+    write_atomically(&args.out, &library.to_json())?;
+    print!("{log}");
+    print!("{}", summary_table(&library));
+    println!(
+        "wrote {} ({} operators from {} activities of {} recordings)",
+        args.out.display(),
+        library.len(),
+        library.segments(),
+        library.recordings().count()
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Per type: activities, operators, and each operator's count and cost.
+pub fn summary_table(library: &Library) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "{:<6} {:>10} {:>9}  operators (name count/cost)",
+        "type", "activities", "operators"
+    );
+    for a in TYPE_ORDER {
+        let ranked = library.ranked_type(a);
+        let list: Vec<String> = ranked
+            .iter()
+            .map(|r| {
+                let mark = if r.operator().has_effects() { "" } else { "*" };
+                format!("{}{mark} {}/{}", r.name(), r.count(), r.cost)
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "{:<6} {:>10} {:>9}  {}",
+            a.name(),
+            library.type_count(a),
+            ranked.len(),
+            list.join(", ")
+        );
+    }
+    let _ = writeln!(
+        s,
+        "{:<6} {:>10} {:>9}  (* changes nothing: left out of domains)",
+        "all",
+        library.segments(),
+        library.len()
+    );
+    s
+}
+
+/// The command line of `operators`.
+#[derive(Debug)]
+pub struct OperatorsArgs {
+    pub library: PathBuf,
+    pub markdown: bool,
+}
+
+pub fn operators(args: OperatorsArgs) -> Result<ExitCode, Failure> {
+    let library = read_library(&args.library)?;
+    let text = if args.markdown {
+        cards_markdown(&library)
+    } else {
+        cards_text(&library)
+    };
+    print!("{text}");
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Every fact an operator mentions, with its value in the precondition and effect:
+/// `Some(true)`, `Some(false)` or `None` (not mentioned).
+fn card_rows(r: &Ranked<'_>) -> Vec<(String, Option<bool>, Option<bool>)> {
+    let op = r.operator();
+    let names = op.param_names();
+    let mut facts: Vec<learn::LiftedFact> = op
+        .pre_positive
+        .iter()
+        .chain(&op.pre_negative)
+        .chain(&op.add)
+        .chain(&op.delete)
+        .copied()
+        .collect();
+    facts.sort_unstable();
+    facts.dedup();
+    facts
+        .iter()
+        .map(|f| {
+            let pre = if op.pre_positive.contains(f) {
+                Some(true)
+            } else if op.pre_negative.contains(f) {
+                Some(false)
+            } else {
+                None
+            };
+            let eff = if op.add.contains(f) {
+                Some(true)
+            } else if op.delete.contains(f) {
+                Some(false)
+            } else {
+                None
+            };
+            (learn::fact_text(f, &names), pre, eff)
+        })
+        .collect()
+}
+
+fn value(v: Option<bool>) -> &'static str {
+    match v {
+        Some(true) => "true",
+        Some(false) => "false",
+        None => "",
+    }
+}
+
+fn header_line(r: &Ranked<'_>) -> String {
+    let op = r.operator();
+    let params: Vec<String> = op
+        .param_names()
+        .iter()
+        .zip(&op.params)
+        .map(|(n, t)| format!("{n} - {}", t.name()))
+        .collect();
+    format!(
+        "{} ({}, count {}, cost {}, id {}): {}",
+        r.name(),
+        op.activity.name(),
+        r.count(),
+        r.cost,
+        op.id(),
+        params.join(", ")
+    )
+}
+
+fn supporters(r: &Ranked<'_>) -> String {
+    let list: Vec<String> = r
+        .entry
+        .provenance
+        .iter()
+        .map(|p| format!("{} {} {:.2}-{:.2} s", p.recording, p.hand, p.start, p.end))
+        .collect();
+    list.join("; ")
+}
+
+/// Operator cards as text: preconditions and effects side by side.
+pub fn cards_text(library: &Library) -> String {
+    let mut s = String::new();
+    for r in library.ranked() {
+        let _ = writeln!(s, "{}", header_line(&r));
+        if !r.operator().has_effects() {
+            let _ = writeln!(s, "  (changes nothing: left out of domains by default)");
+        }
+        let rows = card_rows(&r);
+        let width = rows.iter().map(|x| x.0.len()).max().unwrap_or(4).max(4);
+        let _ = writeln!(s, "  {:<width$}  {:<12}  effect", "fact", "precondition");
+        for (fact, pre, eff) in rows {
+            let _ = writeln!(s, "  {fact:<width$}  {:<12}  {}", value(pre), value(eff));
+        }
+        let _ = writeln!(s, "  seen in: {}\n", supporters(&r));
+    }
+    s
+}
+
+/// Operator cards as Markdown, like the paper's Figure 2.
+pub fn cards_markdown(library: &Library) -> String {
+    let mut s = String::from("# Operator cards\n\n");
+    let _ = writeln!(
+        s,
+        "{} operators from {} activities of {} recordings; cost = ceil({} * (1 - count / \
+         type count)).\n",
+        library.len(),
+        library.segments(),
+        library.recordings().count(),
+        library.lambda
+    );
+    for r in library.ranked() {
+        let op = r.operator();
+        let _ = writeln!(
+            s,
+            "## {} ({}, count {}, cost {})\n",
+            r.name(),
+            op.activity.name(),
+            r.count(),
+            r.cost
+        );
+        let params: Vec<String> = op
+            .param_names()
+            .iter()
+            .zip(&op.params)
+            .map(|(n, t)| format!("`{n} - {}`", t.name()))
+            .collect();
+        let _ = writeln!(s, "Parameters: {}. Id `{}`.\n", params.join(", "), op.id());
+        if !op.has_effects() {
+            let _ = writeln!(s, "Changes nothing: left out of domains by default.\n");
+        }
+        let _ = writeln!(s, "| fact | precondition | effect |\n|---|---|---|");
+        for (fact, pre, eff) in card_rows(&r) {
+            let _ = writeln!(s, "| `{fact}` | {} | {} |", value(pre), value(eff));
+        }
+        let _ = writeln!(s, "\nSeen in: {}.\n", supporters(&r));
+    }
+    s
+}
+
+/// The command line of `domain`.
+#[derive(Debug)]
+pub struct DomainArgs {
+    pub library: PathBuf,
+    pub prio: Option<usize>,
+    pub full: bool,
+    pub out: Option<PathBuf>,
+    pub keep_without_effects: bool,
+}
+
+/// A domain file's text with a comment block saying what it is.
+pub fn domain_text(library: &Library, operators: &[Ranked<'_>], what: &str) -> String {
+    let counts = per_type(operators);
+    let per: Vec<String> = TYPE_ORDER
+        .iter()
+        .zip(counts)
+        .map(|(a, n)| format!("{} {n}", a.name().to_ascii_lowercase()))
+        .collect();
+    format!(
+        "; demoplan domain: {what}, {} operators ({}), from {} activities of {} recordings.\n\
+         ; Costs: ceil({} * (1 - count / type count)).\n{}",
+        operators.len(),
+        per.join(", "),
+        library.segments(),
+        library.recordings().count(),
+        library.lambda,
+        domain("demoplan", operators)
+    )
+}
+
+pub fn run_domain(args: DomainArgs) -> Result<ExitCode, Failure> {
+    let library = read_library(&args.library)?;
+    let options = DomainOptions {
+        keep_without_effects: args.keep_without_effects,
+    };
+    let all = levels(&library, options);
+    let Some(out) = args.out else {
+        // No output file: list the levels.
+        println!(
+            "{:>5} {:>9}  per type (reach, take, put, stack, idle)",
+            "prio", "operators"
+        );
+        for l in &all {
+            let counts = per_type(&l.operators);
+            println!("{:>5} {:>9}  {:?}", l.prio, l.operators.len(), counts);
+        }
+        return Ok(ExitCode::SUCCESS);
+    };
+    let (operators, what) = if args.full {
+        let most = all.last().map_or(0, |l| l.prio);
+        (
+            operator_subset(&library, most.max(1), options),
+            "full domain".to_string(),
+        )
+    } else {
+        let prio = args.prio.unwrap_or(1);
+        (
+            operator_subset(&library, prio, options),
+            format!("priority {prio}"),
+        )
+    };
+    if operators.is_empty() {
+        return Err(Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!(
+                "{}: the library has no operator that changes anything; a domain would be \
+                 empty",
+                args.library.display()
+            ),
+        ));
+    }
+    write_atomically(&out, &domain_text(&library, &operators, &what))?;
+    println!(
+        "wrote {} ({what}: {} operators)",
+        out.display(),
+        operators.len()
+    );
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The command line of `problem`.
+#[derive(Debug)]
+pub struct ProblemArgs {
+    pub tower: Option<String>,
+    pub paper_goal: Option<usize>,
+    pub cubes: Option<usize>,
+    pub from: Option<PathBuf>,
+    pub frame: Option<u64>,
+    pub out: PathBuf,
+    pub config: Option<PathBuf>,
+}
+
+/// The scene of a problem: grounded from a recording's frame, or the default.
+fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
+    let Some(path) = &args.from else {
+        return Ok(Scene::cubes_on_table(
+            args.cubes.unwrap_or(learn::DEFAULT_CUBES),
+        ));
+    };
+    let config = demo_input::config(args.config.as_deref())?;
+    let tree = segment::ActivityTree::table_one();
+    let wanted = args.frame.unwrap_or(0);
+    let mut state = None;
+    let segmented = demo_input::segment_recording(
+        path,
+        &config,
+        &tree,
+        |_, _| {},
+        |g| {
+            if g.index == wanted {
+                state = Some(g.state.clone());
+            }
+        },
+    )?;
+    let Some(state) = state else {
+        return Err(Failure::plain(
+            ExitCode::USAGE,
+            format!(
+                "{} has {} frames; --frame {wanted} is not one of them (frames count from 0)",
+                path.display(),
+                segmented.frames
+            ),
+        ));
+    };
+    Ok(Scene::from_state(
+        &segmented.header,
+        &segmented.space,
+        &state,
+    ))
+}
+
+pub fn run_problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
+    let scene = scene(&args)?;
+    let (tower, name): (Vec<String>, String) = match (&args.tower, args.paper_goal) {
+        (Some(list), None) => {
+            let tower: Vec<String> = list
+                .split(',')
+                .map(|c| c.trim().to_ascii_lowercase())
+                .collect();
+            (tower.clone(), format!("tower-{}", tower.join("-")))
+        }
+        (None, Some(n)) if (1..=5).contains(&n) => (paper_goal_tower(n), format!("paper-goal-{n}")),
+        (None, Some(n)) => {
+            return Err(Failure::plain(
+                ExitCode::USAGE,
+                format!("--paper-goal {n}: the paper has goals 1 to 5"),
+            ))
+        }
+        _ => {
+            return Err(Failure::plain(
+                ExitCode::USAGE,
+                "give the goal with --tower LIST or --paper-goal N",
+            ))
+        }
+    };
+    if tower.len() < 2 {
+        return Err(Failure::plain(
+            ExitCode::USAGE,
+            "a tower needs at least two cubes, listed bottom first: --tower c1,c2",
+        ));
+    }
+    for (i, c) in tower.iter().enumerate() {
+        if !scene.has_cube(c) {
+            return Err(Failure::plain(
+                ExitCode::USAGE,
+                format!(
+                    "the tower names `{c}`, which is not a cube of the scene (cubes: {})",
+                    scene.cubes.join(", ")
+                ),
+            ));
+        }
+        if tower[..i].contains(c) {
+            return Err(Failure::plain(
+                ExitCode::USAGE,
+                format!("the tower names `{c}` twice"),
+            ));
+        }
+    }
+    let goal = tower_goal(&scene, &tower);
+    let text = format!(
+        "; demoplan problem: a tower of {} cubes, bottom first: {}.\n{}",
+        tower.len(),
+        tower.join(", "),
+        problem(&name, "demoplan", &scene, &goal)
+    );
+    write_atomically(&args.out, &text)?;
+    println!("wrote {} ({name})", args.out.display());
+    Ok(ExitCode::SUCCESS)
+}

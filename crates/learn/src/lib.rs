@@ -1,0 +1,40 @@
+//! The operator library, the paper's core idea: every demonstrated segment becomes a
+//! lifted planning operator, operators equal up to renaming of parameters are merged
+//! with a count, the count becomes an action cost, and domains are built from the most
+//! frequent operators first.
+//!
+//! - [`lift`] turns a [`segment::Segment`] into an [`Operator`]: its objects are the
+//!   segment's hand, the object in hand, the object acted on and the arguments of the
+//!   facts that change; the precondition is every fact over them (positive or negative)
+//!   in the state the segment starts from, the effects what differs at its last frame.
+//! - [`Library`] merges and counts operators, remembers their provenance and the
+//!   recordings (by content hash, never counted twice), names operators by rank (`put`,
+//!   `put2`, ...) and costs them with `ceil(lambda * (1 - count / type_count))`. Its
+//!   JSON form is versioned and deterministic: the same recordings give the same bytes
+//!   in any learning order.
+//! - [`operator_subset`] and [`levels`] are the paper's `OperatorSubset` and the levels
+//!   of its Algorithm 1; [`domain`] and [`problem`] write PDDL through the `pddl` crate.
+//!
+//! ```
+//! use learn::{cost, Library};
+//! assert_eq!(cost(100, 1, 3), 67); // ceil(100 * (1 - 1/3))
+//! assert!(Library::default().is_empty());
+//! ```
+
+mod domain;
+mod hash;
+mod library;
+mod operator;
+mod pipeline;
+
+pub use domain::{
+    action, domain, domain_name, levels, operator_subset, paper_goal_tower, pddl_predicate,
+    per_type, problem, tower_goal, DomainOptions, Level, Scene, DEFAULT_CUBES, DEFAULT_HANDS,
+};
+pub use hash::{stable_hash, StableHasher};
+pub use library::{
+    cost, display_name, Added, Entry, Library, LibraryError, Provenance, Ranked, RecordingInfo,
+    DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION, TYPE_ORDER,
+};
+pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
+pub use pipeline::{activities, segment_frames, Segmented};

@@ -1,0 +1,793 @@
+//! The operator library: every demonstrated operator with its count and provenance, the
+//! recordings it was learned from, costs from counts and display names by rank; stored
+//! as versioned JSON.
+
+use std::collections::BTreeMap;
+
+use grounding::{FactSpace, Predicate};
+use recording::Header;
+use segment::{Activity, Segment};
+use serde::{Deserialize, Serialize};
+
+use crate::operator::{fact_text, lift, LiftedFact, Operator, ParamType};
+use crate::pipeline::activities;
+
+/// The format name written into every library file.
+pub const FORMAT_NAME: &str = "demoplan-library";
+
+/// The newest library format version this build reads and the one it writes.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// The paper's lambda: the largest action cost.
+pub const DEFAULT_LAMBDA: u32 = 100;
+
+/// Activity types in the order tables, domains and cards list them: the order of a
+/// demonstration (reach, take, put, stack), then idle.
+pub const TYPE_ORDER: [Activity; 5] = [
+    Activity::Reach,
+    Activity::Take,
+    Activity::Put,
+    Activity::Stack,
+    Activity::Idle,
+];
+
+/// A recording the library has learned from. Its content hash keeps it from being
+/// counted twice.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RecordingInfo {
+    /// Hash of the recording's bytes, 16 hex digits.
+    pub hash: String,
+    /// The recording's id (from its header).
+    pub id: String,
+    /// The participant (from its header).
+    pub participant: String,
+    /// Where it was read from, as given (informative only).
+    #[serde(default)]
+    pub source: String,
+    /// Its number of frames.
+    #[serde(default)]
+    pub frames: u64,
+    /// Its number of segments (each counted once in the library).
+    #[serde(default)]
+    pub segments: u64,
+}
+
+/// One demonstrated segment behind an operator.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Provenance {
+    /// Recording id.
+    pub recording: String,
+    /// Recording content hash.
+    pub hash: String,
+    /// Participant.
+    pub participant: String,
+    /// The hand's entity name.
+    pub hand: String,
+    /// Start of the segment (s, rounded to the millisecond).
+    pub start: f64,
+    /// End of the segment (s, rounded to the millisecond).
+    pub end: f64,
+}
+
+/// An operator with its count and provenance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    /// The operator, canonical.
+    pub operator: Operator,
+    /// How many segments demonstrated it.
+    pub count: u64,
+    /// Which segments, sorted.
+    pub provenance: Vec<Provenance>,
+}
+
+/// The library. Its content does not depend on the order recordings were added in.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Library {
+    /// The largest cost (`lambda` of the cost formula).
+    pub lambda: u32,
+    recordings: BTreeMap<String, RecordingInfo>,
+    operators: BTreeMap<Operator, Entry>,
+}
+
+/// An operator with what its rank gives it: name, rank within its type, and cost.
+#[derive(Debug, Clone, Copy)]
+pub struct Ranked<'a> {
+    /// The library entry.
+    pub entry: &'a Entry,
+    /// 1 for the most frequent operator of its type.
+    pub rank: usize,
+    /// The paper's cost, from count and type count.
+    pub cost: u32,
+}
+
+impl Ranked<'_> {
+    /// The display name: `put` for rank 1, `put2` for rank 2, ...
+    pub fn name(&self) -> String {
+        display_name(self.entry.operator.activity, self.rank)
+    }
+
+    /// The operator.
+    pub fn operator(&self) -> &Operator {
+        &self.entry.operator
+    }
+
+    /// Its count.
+    pub fn count(&self) -> u64 {
+        self.entry.count
+    }
+}
+
+/// `put` for rank 1, `put2` for rank 2, ...
+pub fn display_name(activity: Activity, rank: usize) -> String {
+    let base = activity.name().to_ascii_lowercase();
+    if rank <= 1 {
+        base
+    } else {
+        format!("{base}{rank}")
+    }
+}
+
+/// The paper's cost, `ceil(lambda * (1 - count / type_count))`, in integers. A type with
+/// no segments has no operators; its cost is defined as `lambda`.
+pub fn cost(lambda: u32, count: u64, type_count: u64) -> u32 {
+    if type_count == 0 {
+        return lambda;
+    }
+    let count = count.min(type_count);
+    let numerator = u128::from(lambda) * u128::from(type_count - count);
+    numerator.div_ceil(u128::from(type_count)) as u32
+}
+
+/// What adding a recording did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Added {
+    /// Its segments were counted: how many, and how many operators were new.
+    Counted {
+        /// Segments counted.
+        segments: u64,
+        /// Operators not in the library before.
+        new_operators: usize,
+    },
+    /// A recording with the same content hash was counted before: nothing changed.
+    AlreadyCounted,
+}
+
+impl Default for Library {
+    fn default() -> Library {
+        Library::new(DEFAULT_LAMBDA)
+    }
+}
+
+impl Library {
+    /// An empty library.
+    pub fn new(lambda: u32) -> Library {
+        Library {
+            lambda,
+            recordings: BTreeMap::new(),
+            operators: BTreeMap::new(),
+        }
+    }
+
+    /// Counts the operators of a recording's activities (its segments, consecutive ones of
+    /// the same class per hand merged: see [`activities`]), unless a recording with the
+    /// same hash was counted before.
+    pub fn add_recording(
+        &mut self,
+        info: RecordingInfo,
+        header: &Header,
+        space: &FactSpace,
+        segments: &[Segment],
+    ) -> Added {
+        if self.recordings.contains_key(&info.hash) {
+            return Added::AlreadyCounted;
+        }
+        let mut new_operators = 0;
+        let activities = activities(segments);
+        for s in &activities {
+            let operator = lift(s, space, header);
+            let provenance = Provenance {
+                recording: info.id.clone(),
+                hash: info.hash.clone(),
+                participant: info.participant.clone(),
+                hand: header
+                    .entities
+                    .get(s.hand.index())
+                    .map(|e| e.name.clone())
+                    .unwrap_or_default(),
+                start: millis(s.start),
+                end: millis(s.end),
+            };
+            let entry = self.operators.entry(operator.clone()).or_insert_with(|| {
+                new_operators += 1;
+                Entry {
+                    operator,
+                    count: 0,
+                    provenance: Vec::new(),
+                }
+            });
+            entry.count += 1;
+            entry.provenance.push(provenance);
+            sort_provenance(&mut entry.provenance);
+        }
+        let segments_counted = activities.len() as u64;
+        self.recordings.insert(
+            info.hash.clone(),
+            RecordingInfo {
+                segments: segments_counted,
+                ..info
+            },
+        );
+        Added::Counted {
+            segments: segments_counted,
+            new_operators,
+        }
+    }
+
+    /// Adds every recording and count of another library (recordings this one has are
+    /// skipped).
+    pub fn merge(&mut self, other: &Library) {
+        let fresh: Vec<&String> = other
+            .recordings
+            .keys()
+            .filter(|h| !self.recordings.contains_key(*h))
+            .collect();
+        for hash in &fresh {
+            if let Some(info) = other.recordings.get(*hash) {
+                self.recordings.insert((*hash).clone(), info.clone());
+            }
+        }
+        for e in other.operators.values() {
+            let mine: Vec<Provenance> = e
+                .provenance
+                .iter()
+                .filter(|p| fresh.contains(&&p.hash))
+                .cloned()
+                .collect();
+            if mine.is_empty() {
+                continue;
+            }
+            let entry = self
+                .operators
+                .entry(e.operator.clone())
+                .or_insert_with(|| Entry {
+                    operator: e.operator.clone(),
+                    count: 0,
+                    provenance: Vec::new(),
+                });
+            entry.count += mine.len() as u64;
+            entry.provenance.extend(mine);
+            sort_provenance(&mut entry.provenance);
+        }
+    }
+
+    /// Adds `count` occurrences of an operator without provenance (for tests of what
+    /// is computed from counts).
+    #[cfg(test)]
+    pub(crate) fn insert_counted(&mut self, operator: Operator, count: u64) {
+        let entry = self
+            .operators
+            .entry(operator.clone())
+            .or_insert_with(|| Entry {
+                operator,
+                count: 0,
+                provenance: Vec::new(),
+            });
+        entry.count += count;
+    }
+
+    /// The recordings learned from, by hash.
+    pub fn recordings(&self) -> impl Iterator<Item = &RecordingInfo> {
+        self.recordings.values()
+    }
+
+    /// Whether a recording with this hash was counted.
+    pub fn has_recording(&self, hash: &str) -> bool {
+        self.recordings.contains_key(hash)
+    }
+
+    /// Every entry, in canonical order.
+    pub fn entries(&self) -> impl Iterator<Item = &Entry> {
+        self.operators.values()
+    }
+
+    /// Number of distinct operators.
+    pub fn len(&self) -> usize {
+        self.operators.len()
+    }
+
+    /// Whether the library has no operator.
+    pub fn is_empty(&self) -> bool {
+        self.operators.is_empty()
+    }
+
+    /// Number of segments of a type: the sum of its operators' counts.
+    pub fn type_count(&self, activity: Activity) -> u64 {
+        self.operators
+            .values()
+            .filter(|e| e.operator.activity == activity)
+            .map(|e| e.count)
+            .sum()
+    }
+
+    /// Number of segments of all types.
+    pub fn segments(&self) -> u64 {
+        self.operators.values().map(|e| e.count).sum()
+    }
+
+    /// The operators of one type, most frequent first (ties by canonical form), with
+    /// rank and cost.
+    pub fn ranked_type(&self, activity: Activity) -> Vec<Ranked<'_>> {
+        let type_count = self.type_count(activity);
+        let mut entries: Vec<&Entry> = self
+            .operators
+            .values()
+            .filter(|e| e.operator.activity == activity)
+            .collect();
+        // `operators` iterates in canonical order, and the sort is stable.
+        entries.sort_by_key(|e| std::cmp::Reverse(e.count));
+        entries
+            .into_iter()
+            .enumerate()
+            .map(|(i, entry)| Ranked {
+                entry,
+                rank: i + 1,
+                cost: cost(self.lambda, entry.count, type_count),
+            })
+            .collect()
+    }
+
+    /// Every operator ranked, types in [`TYPE_ORDER`].
+    pub fn ranked(&self) -> Vec<Ranked<'_>> {
+        TYPE_ORDER
+            .iter()
+            .flat_map(|&a| self.ranked_type(a))
+            .collect()
+    }
+
+    /// The library as JSON (deterministic: the same library gives the same bytes).
+    pub fn to_json(&self) -> String {
+        let file = LibraryFile {
+            format: FORMAT_NAME.to_string(),
+            version: FORMAT_VERSION,
+            lambda: self.lambda,
+            type_counts: TYPE_ORDER
+                .iter()
+                .map(|&a| (a.name().to_string(), self.type_count(a)))
+                .collect(),
+            recordings: self.recordings.values().cloned().collect(),
+            operators: self
+                .ranked()
+                .iter()
+                .map(|r| {
+                    let op = r.operator();
+                    let names = op.param_names();
+                    let facts =
+                        |fs: &[LiftedFact]| fs.iter().map(|f| fact_text(f, &names)).collect();
+                    OperatorRecord {
+                        id: op.id(),
+                        name: r.name(),
+                        activity: op.activity.name().to_string(),
+                        count: r.count(),
+                        cost: r.cost,
+                        parameters: names
+                            .iter()
+                            .zip(&op.params)
+                            .map(|(n, t)| format!("{n} - {}", t.name()))
+                            .collect(),
+                        precondition: facts(&op.pre_positive),
+                        negative_precondition: facts(&op.pre_negative),
+                        add: facts(&op.add),
+                        delete: facts(&op.delete),
+                        provenance: r.entry.provenance.clone(),
+                    }
+                })
+                .collect(),
+        };
+        let mut text = serde_json::to_string_pretty(&file).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+
+    /// Reads a library. Ids, names, costs and type counts in the file are derived data
+    /// and are recomputed; operators that are equal once read (e.g. after editing by
+    /// hand) are merged.
+    pub fn from_json(text: &str) -> Result<Library, LibraryError> {
+        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| LibraryError {
+            line: e.line(),
+            column: e.column(),
+            field: String::new(),
+            message: format!("not a valid JSON document: {e}"),
+        })?;
+        let format = value.get("format").and_then(|v| v.as_str());
+        if format != Some(FORMAT_NAME) {
+            return Err(LibraryError::at(
+                text,
+                "\"format\"",
+                "format",
+                format!(
+                    "not a demoplan library: `format` is {}, expected \"{FORMAT_NAME}\"",
+                    format.map_or("missing".to_string(), |f| format!("\"{f}\""))
+                ),
+            ));
+        }
+        match value.get("version").and_then(|v| v.as_u64()) {
+            Some(v) if v == u64::from(FORMAT_VERSION) => {}
+            Some(v) if v > u64::from(FORMAT_VERSION) => {
+                return Err(LibraryError::at(
+                    text,
+                    "\"version\"",
+                    "version",
+                    format!(
+                        "library format version {v} is newer than this demoplan reads \
+                         (up to {FORMAT_VERSION}); use a newer demoplan"
+                    ),
+                ))
+            }
+            other => {
+                return Err(LibraryError::at(
+                    text,
+                    "\"version\"",
+                    "version",
+                    format!(
+                        "unknown library format version {}; this demoplan reads version \
+                         {FORMAT_VERSION}",
+                        other.map_or("(missing)".to_string(), |v| v.to_string())
+                    ),
+                ))
+            }
+        }
+        let file: LibraryFile = serde_json::from_str(text).map_err(|e| LibraryError {
+            line: e.line(),
+            column: e.column(),
+            field: String::new(),
+            message: e.to_string(),
+        })?;
+        let mut library = Library::new(file.lambda);
+        for r in file.recordings {
+            if library.recordings.contains_key(&r.hash) {
+                return Err(LibraryError::at(
+                    text,
+                    &format!("\"{}\"", r.hash),
+                    "recordings",
+                    format!("recording hash {} is listed twice", r.hash),
+                ));
+            }
+            library.recordings.insert(r.hash.clone(), r);
+        }
+        for (i, record) in file.operators.into_iter().enumerate() {
+            let operator = record.operator(text, i)?;
+            if record.count == 0 {
+                return Err(LibraryError::at(
+                    text,
+                    &format!("\"{}\"", record.id),
+                    "count",
+                    format!("operator {} ({}) has count 0", i + 1, record.name),
+                ));
+            }
+            for p in &record.provenance {
+                if !library.recordings.contains_key(&p.hash) {
+                    return Err(LibraryError::at(
+                        text,
+                        &format!("\"{}\"", p.hash),
+                        "provenance",
+                        format!(
+                            "operator {} ({}) names recording hash {}, which `recordings` \
+                             does not list",
+                            i + 1,
+                            record.name,
+                            p.hash
+                        ),
+                    ));
+                }
+            }
+            let entry = library
+                .operators
+                .entry(operator.clone())
+                .or_insert_with(|| Entry {
+                    operator,
+                    count: 0,
+                    provenance: Vec::new(),
+                });
+            entry.count += record.count;
+            entry.provenance.extend(record.provenance);
+            sort_provenance(&mut entry.provenance);
+        }
+        Ok(library)
+    }
+}
+
+fn millis(t: f64) -> f64 {
+    (t * 1000.0).round() / 1000.0
+}
+
+fn sort_provenance(p: &mut [Provenance]) {
+    p.sort_by(|a, b| {
+        (&a.recording, &a.hash, &a.hand)
+            .cmp(&(&b.recording, &b.hash, &b.hand))
+            .then(a.start.total_cmp(&b.start))
+            .then(a.end.total_cmp(&b.end))
+    });
+}
+
+/// A library file that cannot be read: where (1-based line and column; 0 when unknown),
+/// which field, and what is wrong.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LibraryError {
+    /// Line, 1-based (0: unknown).
+    pub line: usize,
+    /// Column, 1-based (0: the whole line).
+    pub column: usize,
+    /// The field.
+    pub field: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl LibraryError {
+    /// An error at the first place `needle` occurs in `text` (line 0 when it does not).
+    fn at(text: &str, needle: &str, field: &str, message: String) -> LibraryError {
+        let (line, column) = match text.find(needle) {
+            Some(offset) => {
+                let before = &text[..offset];
+                let line = before.matches('\n').count() + 1;
+                let column = offset - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+                (line, column)
+            }
+            None => (0, 0),
+        };
+        LibraryError {
+            line,
+            column,
+            field: field.to_string(),
+            message,
+        }
+    }
+}
+
+impl std::fmt::Display for LibraryError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.line > 0 {
+            write!(f, "line {}: ", self.line)?;
+        }
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for LibraryError {}
+
+#[derive(Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LibraryFile {
+    format: String,
+    version: u32,
+    lambda: u32,
+    /// Derived (sums of counts); written for readers, ignored when read.
+    #[serde(default)]
+    type_counts: BTreeMap<String, u64>,
+    recordings: Vec<RecordingInfo>,
+    operators: Vec<OperatorRecord>,
+}
+
+#[derive(Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct OperatorRecord {
+    /// Derived from the canonical form; ignored when read.
+    #[serde(default)]
+    id: String,
+    /// Derived from the rank; ignored when read.
+    #[serde(default)]
+    name: String,
+    #[serde(rename = "type")]
+    activity: String,
+    count: u64,
+    /// Derived from counts; ignored when read.
+    #[serde(default)]
+    cost: u32,
+    parameters: Vec<String>,
+    precondition: Vec<String>,
+    negative_precondition: Vec<String>,
+    add: Vec<String>,
+    delete: Vec<String>,
+    #[serde(default)]
+    provenance: Vec<Provenance>,
+}
+
+impl OperatorRecord {
+    /// The operator this record describes; errors point at the offending string.
+    fn operator(&self, text: &str, index: usize) -> Result<Operator, LibraryError> {
+        let which = || {
+            if self.name.is_empty() {
+                format!("operator {}", index + 1)
+            } else {
+                format!("operator {} ({})", index + 1, self.name)
+            }
+        };
+        let activity = Activity::from_name(&self.activity).ok_or_else(|| {
+            LibraryError::at(
+                text,
+                &format!("\"{}\"", self.activity),
+                "type",
+                format!(
+                    "{}: unknown activity type `{}` (expected Reach, Take, Put, Stack or Idle)",
+                    which(),
+                    self.activity
+                ),
+            )
+        })?;
+        let mut names = Vec::new();
+        let mut params = Vec::new();
+        for p in &self.parameters {
+            let bad = |why: &str| {
+                LibraryError::at(
+                    text,
+                    &format!("\"{p}\""),
+                    "parameters",
+                    format!(
+                        "{}: parameter `{p}` {why} (expected `?name - type`, type hand, cube, \
+                         table or thing)",
+                        which()
+                    ),
+                )
+            };
+            let (name, ty) = p.split_once(" - ").ok_or_else(|| bad("has no type"))?;
+            let name = name.trim();
+            if !name.starts_with('?') || name.len() < 2 {
+                return Err(bad("is not a variable"));
+            }
+            let ty = ParamType::from_name(ty.trim()).ok_or_else(|| bad("has an unknown type"))?;
+            if names.iter().any(|n| n == name) {
+                return Err(bad("is declared twice"));
+            }
+            names.push(name.to_string());
+            params.push(ty);
+        }
+        if params.len() > 64 {
+            return Err(LibraryError::at(
+                text,
+                &format!("\"{}\"", self.parameters[64]),
+                "parameters",
+                format!("{}: more than 64 parameters", which()),
+            ));
+        }
+        let facts = |field: &str, list: &[String]| -> Result<Vec<LiftedFact>, LibraryError> {
+            list.iter()
+                .map(|s| {
+                    parse_fact(s, &names, &params).map_err(|why| {
+                        LibraryError::at(
+                            text,
+                            &format!("\"{s}\""),
+                            field,
+                            format!("{}: {field} `{s}`: {why}", which()),
+                        )
+                    })
+                })
+                .collect()
+        };
+        let sorted = |field: &str, list: &[String]| {
+            facts(field, list).map(|mut v| {
+                v.sort_unstable();
+                v.dedup();
+                v
+            })
+        };
+        Ok(Operator::new(
+            activity,
+            params.clone(),
+            sorted("precondition", &self.precondition)?,
+            sorted("negative_precondition", &self.negative_precondition)?,
+            sorted("add", &self.add)?,
+            sorted("delete", &self.delete)?,
+        ))
+    }
+}
+
+/// `inHand(?h, ?c1)` over the named parameters.
+fn parse_fact(s: &str, names: &[String], params: &[ParamType]) -> Result<LiftedFact, String> {
+    let s = s.trim();
+    let (name, rest) = s.split_once('(').ok_or("expected `predicate(?a, ?b)`")?;
+    let args = rest.strip_suffix(')').ok_or("expected `)` at the end")?;
+    let predicate = Predicate::ALL
+        .into_iter()
+        .find(|p| p.name().eq_ignore_ascii_case(name.trim()))
+        .ok_or_else(|| {
+            format!(
+                "unknown predicate `{}` (expected one of {})",
+                name.trim(),
+                Predicate::ALL.map(|p| p.name()).join(", ")
+            )
+        })?;
+    let args: Vec<&str> = args.split(',').map(str::trim).collect();
+    if args.len() != predicate.arity() {
+        return Err(format!(
+            "{} takes {} argument(s), not {}",
+            predicate.name(),
+            predicate.arity(),
+            args.len()
+        ));
+    }
+    let mut idx = [0u8; 2];
+    for (k, a) in args.iter().enumerate() {
+        let i = names
+            .iter()
+            .position(|n| n == a)
+            .ok_or_else(|| format!("`{a}` is not a parameter"))?;
+        idx[k] = i as u8;
+    }
+    if predicate.arity() == 1 {
+        idx[1] = idx[0];
+    }
+    // Argument types: the hand slot takes a hand, other slots things.
+    let hand_slots: &[usize] = match predicate {
+        Predicate::HandMove | Predicate::HandOpen => &[0],
+        Predicate::ActedOn | Predicate::Graspable | Predicate::InHand => &[0],
+        Predicate::InTouch | Predicate::OnTop => &[],
+    };
+    for k in 0..predicate.arity() {
+        let is_hand = params[idx[k] as usize] == ParamType::Hand;
+        if hand_slots.contains(&k) != is_hand {
+            return Err(format!(
+                "argument {} of {} must be {}",
+                k + 1,
+                predicate.name(),
+                if hand_slots.contains(&k) {
+                    "a hand"
+                } else {
+                    "a thing (cube, table or thing), not a hand"
+                }
+            ));
+        }
+    }
+    Ok(LiftedFact::new(predicate, idx[0], idx[1]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cost_formula_at_its_edges() {
+        // The only operator of its type costs nothing.
+        assert_eq!(cost(100, 7, 7), 0);
+        // Rounding up: 1 - 1/3 = 0.666..., times 100 is 66.6..., so 67.
+        assert_eq!(cost(100, 1, 3), 67);
+        assert_eq!(cost(100, 2, 3), 34);
+        // Exact: 1 - 1/4 = 0.75.
+        assert_eq!(cost(100, 1, 4), 75);
+        // Seen once among many: close to lambda but below it.
+        assert_eq!(cost(100, 1, 1000), 100);
+        assert_eq!(cost(100, 1, 1001), 100);
+        assert_eq!(cost(100, 999, 1000), 1);
+        // Another lambda.
+        assert_eq!(cost(10, 1, 3), 7);
+        // No overflow with huge counts.
+        assert_eq!(cost(u32::MAX, 1, u64::MAX), u32::MAX);
+    }
+
+    #[test]
+    fn display_names_follow_figure_two() {
+        assert_eq!(display_name(Activity::Put, 1), "put");
+        assert_eq!(display_name(Activity::Put, 2), "put2");
+        assert_eq!(display_name(Activity::Reach, 11), "reach11");
+    }
+
+    #[test]
+    fn facts_parse_with_types_checked() {
+        let names = vec!["?h".to_string(), "?c1".to_string(), "?t".to_string()];
+        let params = vec![ParamType::Hand, ParamType::Cube, ParamType::Table];
+        assert_eq!(
+            parse_fact("inHand(?h, ?c1)", &names, &params),
+            Ok(LiftedFact::new(Predicate::InHand, 0, 1))
+        );
+        assert_eq!(
+            parse_fact("INTOUCH(?t, ?c1)", &names, &params),
+            Ok(LiftedFact::new(Predicate::InTouch, 1, 2))
+        );
+        assert!(parse_fact("inHand(?c1, ?h)", &names, &params)
+            .is_err_and(|e| e.contains("must be a hand")));
+        assert!(parse_fact("onTop(?c1)", &names, &params).is_err_and(|e| e.contains("takes 2")));
+        assert!(parse_fact("under(?c1, ?t)", &names, &params)
+            .is_err_and(|e| e.contains("unknown predicate")));
+        assert!(parse_fact("onTop(?c1, ?c9)", &names, &params)
+            .is_err_and(|e| e.contains("not a parameter")));
+    }
+}

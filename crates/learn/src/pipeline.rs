@@ -1,0 +1,66 @@
+//! Grounding and segmentation of frames already in memory (simulated demonstrations,
+//! tests); the command line streams files through the same stages.
+
+use grounding::{FactSpace, Grounder, GroundingConfig};
+use recording::{Frame, Header};
+use segment::{ActivityTree, Segment, Segmenter};
+
+/// A recording's fact space and segments.
+#[derive(Debug, Clone)]
+pub struct Segmented {
+    /// The facts of its scene.
+    pub space: FactSpace,
+    /// Its segments, in the order they ended.
+    pub segments: Vec<Segment>,
+    /// Number of frames.
+    pub frames: u64,
+}
+
+/// Grounds and segments frames of a recording with this header.
+pub fn segment_frames(
+    header: &Header,
+    frames: impl IntoIterator<Item = Frame>,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+) -> Segmented {
+    let mut grounder = Grounder::new(header, config);
+    let hands = grounder.space().hands().to_vec();
+    let mut segmenter = Segmenter::new(&hands, tree.clone(), config.min_duration);
+    let mut count = 0;
+    for frame in frames {
+        count += 1;
+        grounder.push(&frame, &mut |g| segmenter.push_grounded(g));
+    }
+    grounder.finish(&mut |g| segmenter.push_grounded(g));
+    Segmented {
+        space: grounder.space().clone(),
+        segments: segmenter.finish(),
+        frames: count,
+    }
+}
+
+/// The activities of a recording: per hand, maximal runs of consecutive segments with the
+/// same class, each merged into one segment (start state of its first piece, end state,
+/// objects and tuple of its last). Segments end wherever a hand's tuple changes, so a
+/// hand that stops and starts again while idle gives several Idle segments; the paper
+/// counts them as one Idle activity (its 115 activities from 12 demonstrations), and one
+/// operator should describe the whole activity. Sorted by hand, then time.
+pub fn activities(segments: &[Segment]) -> Vec<Segment> {
+    let mut sorted: Vec<&Segment> = segments.iter().collect();
+    sorted.sort_by(|a, b| a.hand.cmp(&b.hand).then(a.start.total_cmp(&b.start)));
+    let mut out: Vec<Segment> = Vec::with_capacity(sorted.len());
+    for s in sorted {
+        match out.last_mut() {
+            Some(last) if last.hand == s.hand && last.activity == s.activity => {
+                last.end = s.end;
+                last.frames += s.frames;
+                last.moving = s.moving;
+                last.acted_on = s.acted_on;
+                last.in_hand = s.in_hand;
+                last.end_state = s.end_state.clone();
+            }
+            _ => out.push(s.clone()),
+        }
+    }
+    out
+}

@@ -60,10 +60,11 @@ pub struct ActedOnConfig {
     /// The least speed towards the object (m/s) that counts as "moving towards it", so
     /// that a hand drifting at rest does not act on what lies beside it.
     pub toward_speed: f64,
-    /// "Towards" also means aimed at: the line along the hand's velocity passes within
-    /// this distance (m) of the object's centre, so that a hand passing by an object on
-    /// its way elsewhere does not act on it. 0 leaves the test out (the paper's wording
-    /// alone: close, and getting closer).
+    /// Optionally, "towards" also means aimed at: the line along the hand's velocity
+    /// passes within this distance (m) of the point above the object's centre at the
+    /// palm's height, so that a hand passing by an object on its way elsewhere does not
+    /// act on it. Not the paper's rule, so 0 by default: the test is left out and the
+    /// paper's wording alone holds (close, and getting closer).
     pub aim_radius: f64,
     /// Once acted on, the object stays so until it is this much farther (m) ...
     pub distance_hysteresis: f64,
@@ -157,7 +158,7 @@ impl Default for ActedOnConfig {
         ActedOnConfig {
             distance: 0.16,
             toward_speed: 0.02,
-            aim_radius: 0.05,
+            aim_radius: 0.0,
             distance_hysteresis: 0.01,
             speed_hysteresis: 0.01,
         }

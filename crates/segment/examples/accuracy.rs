@@ -1,7 +1,7 @@
 //! Segmentation accuracy on simulated studies: `accuracy FIRST_SEED COUNT [PARTICIPANTS
-//! PER_PARTICIPANT [GROUNDING.toml]]`. One line per demonstration: `seed id agree counted sequence_equal
-//! strict_equal`, then the sequences that differ on stderr. Used by
-//! `bench/segmentation-accuracy`.
+//! PER_PARTICIPANT [GROUNDING.toml]]`. One line per demonstration: `seed id agree counted
+//! tolerant_equal merged_equal strict_equal`, then the sequences that differ on stderr.
+//! Used by `bench/segmentation-accuracy`; `examples/diagnose.rs` shows why they differ.
 
 #[path = "../tests/common/mod.rs"]
 mod common;

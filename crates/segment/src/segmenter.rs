@@ -68,6 +68,21 @@ impl Run {
         self.end_state = later.end_state;
     }
 
+    /// Joins a later run of the same activity; the joined run has the tuple (and
+    /// objects) of the longer part.
+    fn join(&mut self, later: Run) {
+        if later.next - later.start > self.next - self.start {
+            self.tuple = later.tuple;
+            self.moving = later.moving;
+            self.acted_on = later.acted_on;
+            self.in_hand = later.in_hand;
+        }
+        for (v, w) in self.votes.iter_mut().zip(later.votes) {
+            *v += w;
+        }
+        self.absorb_after(later);
+    }
+
     fn absorb_before(&mut self, earlier: Run) {
         self.start = earlier.start;
         self.frames += earlier.frames;
@@ -101,10 +116,14 @@ struct HandSegmenter {
 /// Cuts each hand's frames into segments and classifies them, frame by frame: memory
 /// and work per frame do not grow with the recording (segments are kept as they end).
 ///
-/// Merging: a segment shorter than the minimum joins its neighbours when the segments
-/// before and after it have the same tuple (all three become one); otherwise it joins
-/// the one before it (or, at the start of the recording, the one after). A merged
-/// segment keeps the tuple and activity of the long segment it joined.
+/// Merging: neighbouring segments shorter than the minimum that have the same activity
+/// join first (the activity's tuple changed within, as when a hand stops while still
+/// acting on a cube and then acts on nothing: Idle both); if together they last the
+/// minimum, they stand as one segment. A segment still shorter than the minimum joins
+/// its neighbours when the segments before and after it have the same tuple (all three
+/// become one); otherwise the one after it if it has that one's activity and not the
+/// one before's, else the one before it (or, at the start of the recording, the one
+/// after). A merged segment keeps the tuple and activity of the long segment it joined.
 #[derive(Debug, Clone)]
 pub struct Segmenter {
     tree: ActivityTree,
@@ -256,13 +275,36 @@ fn classify(run: &mut Run) {
 }
 
 /// Takes a closed run: keeps it, or holds it back while it is short.
+///
+/// A short run of the same activity as the short run just before it joins that one
+/// first: an activity whose tuple changes within (Idle while still acting on the cube,
+/// then Idle acting on nothing) is one stretch of that activity, and it stands as a
+/// segment once the stretch lasts the minimum.
 fn accept(h: &mut HandSegmenter, mut run: Run, min: f64, done: &mut Vec<Segment>) {
     classify(&mut run);
-    if run.next - run.start < min - EPSILON {
-        h.shorts.push(run);
+    let long = |r: &Run| r.next - r.start >= min - EPSILON;
+    if !long(&run) {
+        match h.shorts.last_mut() {
+            Some(last) if last.activity == run.activity => {
+                last.join(run);
+                if long(last) {
+                    if let Some(joined) = h.shorts.pop() {
+                        keep(h, joined, done);
+                    }
+                }
+            }
+            _ => h.shorts.push(run),
+        }
         return;
     }
-    let shorts = std::mem::take(&mut h.shorts);
+    keep(h, run, done);
+}
+
+/// Takes a long run: the short runs held back before it join the kept run before them,
+/// or all three become one when the kept run has the same tuple; short runs that end the
+/// wait with the new run's activity (and not the kept run's) join the new run instead.
+fn keep(h: &mut HandSegmenter, mut run: Run, done: &mut Vec<Segment>) {
+    let mut shorts = std::mem::take(&mut h.shorts);
     match h.kept.take() {
         Some(mut kept) if kept.tuple == run.tuple => {
             for s in shorts {
@@ -272,6 +314,13 @@ fn accept(h: &mut HandSegmenter, mut run: Run, min: f64, done: &mut Vec<Segment>
             h.kept = Some(kept);
         }
         Some(mut kept) => {
+            if kept.activity != run.activity {
+                while shorts.last().is_some_and(|s| s.activity == run.activity) {
+                    if let Some(s) = shorts.pop() {
+                        run.absorb_before(s);
+                    }
+                }
+            }
             for s in shorts {
                 kept.absorb_after(s);
             }
@@ -354,6 +403,26 @@ mod tests {
         // At the start: into the one after.
         let got = segment(&[(2, REACH), (10, TAKE)]);
         assert_eq!(got, [(Take, 0.0, 11.0)]);
+    }
+
+    #[test]
+    fn short_segments_of_one_activity_stand_together() {
+        use Activity::*;
+        // Two tuples of Idle (still while acting on the cube, then acting on nothing),
+        // each shorter than the minimum but together longer: one Idle segment.
+        const STILL_ACTING: (bool, bool, bool) = (false, true, false);
+        let got = segment(&[(10, REACH), (3, STILL_ACTING), (3, IDLE), (10, TAKE)]);
+        assert_eq!(
+            got,
+            [(Reach, 0.0, 9.0), (Idle, 10.0, 15.0), (Take, 16.0, 25.0)]
+        );
+        // Together still too short: into the one before, as a single short would.
+        let got = segment(&[(10, REACH), (2, STILL_ACTING), (2, IDLE), (10, TAKE)]);
+        assert_eq!(got, [(Reach, 0.0, 13.0), (Take, 14.0, 23.0)]);
+        // A short run of the next segment's activity (and not the last one's) joins the
+        // next segment.
+        let got = segment(&[(10, REACH), (3, STILL_ACTING), (10, IDLE)]);
+        assert_eq!(got, [(Reach, 0.0, 9.0), (Idle, 10.0, 22.0)]);
     }
 
     #[test]

@@ -50,13 +50,11 @@ fn segments_agree_with_the_ground_truth() {
     let agreement = agree as f64 / counted as f64;
     let fraction = sequences as f64 / demos as f64;
     eprintln!("frame agreement {agreement:.4}, sequences equal {sequences} of {demos}\n{report}");
-    // The bar for frames.
+    // The bars: frames, and per-hand sequences (truth runs lying wholly within
+    // the ignored 0.1 s around their boundaries may be missing, see `common::measure`).
     assert!(agreement >= 0.95, "frame agreement {agreement:.4}");
-    // Below the bar of 0.9 (see ARCHITECTURE.md and docs/grounding.md: the truth
-    // knows which cube a hand goes for; grounding sees a hand close to a cube and moving
-    // towards it): this pins what grounding reaches so that it does not get worse.
     assert!(
-        fraction >= 0.5,
+        fraction >= 0.9,
         "sequences equal on {sequences} of {demos}\n{report}"
     );
 }

@@ -15,8 +15,8 @@
 //! frames and timestamp jitter.
 //!
 //! Beside each frame the simulator gives its ground truth ([`TruthFrame`]): per hand the
-//! scripted [`Phase`], the paper's hand-state variables computed from the noise-free state
-//! and the intent (which cube the hand goes for), and the [`Activity`] of the paper's
+//! scripted [`Phase`] and target (its intent), the paper's hand-state variables computed
+//! by the paper's rules from the noise-free state, and the [`Activity`] of the paper's
 //! Table 1.
 //!
 //! ```

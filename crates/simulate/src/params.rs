@@ -243,7 +243,7 @@ pub struct SimParams {
     // ----- ground truth (the paper's Table 2 thresholds) -----
     /// `handMove`: noise-free hand speed above this (m/s).
     pub move_speed: f64,
-    /// `actedOn`: the hand's target is this close to the palm (m), and ...
+    /// `actedOn`: a cube is this close to the palm (m), the nearest such, and ...
     pub acted_on_distance: f64,
     /// `actedOn`: ... the hand moves towards it faster than this (m/s).
     pub toward_speed: f64,

@@ -595,14 +595,23 @@ impl<'a> Frames<'a> {
             let speed = h.vel.norm();
             let moving = speed > p.move_speed;
             let in_hand = h.held.map(|x| x.cube);
-            let acted_on = mark.target.filter(|&c| {
+            // The paper's Table 2 rule on the noise-free state: the nearest cube within
+            // `acted_on_distance` of the palm that the hand moves towards, never the one
+            // in hand. Not only the scripted target: a hand passing close by a cube on
+            // its way, heading for it, acts on it as the paper defines it.
+            let mut acted_on = None;
+            let mut nearest = p.acted_on_distance;
+            for (c, cube) in self.cubes.iter().enumerate() {
                 if Some(c) == in_hand {
-                    return false;
+                    continue;
                 }
-                let d = self.cubes[c].pos - h.pos;
+                let d = cube.pos - h.pos;
                 let dist = d.norm();
-                dist < p.acted_on_distance && dist > 0.0 && h.vel.dot(d) / dist > p.toward_speed
-            });
+                if dist < nearest && dist > 0.0 && h.vel.dot(d) / dist > p.toward_speed {
+                    acted_on = Some(c);
+                    nearest = dist;
+                }
+            }
             let cube = |c: usize| EntityId((self.cube0 + c) as u32);
             truth.hands.push(HandTruth {
                 hand: EntityId(i as u32),

@@ -1,11 +1,20 @@
 //! Ground truth: per frame and hand, what the simulated person was doing.
 //!
 //! The simulator knows its own noise-free state and intent: which phase of its script a
-//! hand is in, which cube it goes for, when the grip closed. From them it computes the
-//! paper's hand-state variables with the paper's thresholds (Table 2) and the activity
-//! by the paper's rules (Table 1). This is the simulator's own code, independent of the
-//! grounding stage it is there to check: it sees true positions and velocities and knows
-//! the target, where grounding sees noisy frames and must guess.
+//! hand is in, which cube it goes for, when the grip closed. From the noise-free state it
+//! computes the paper's hand-state variables by the paper's rules and thresholds (Table
+//! 2) and the activity by the paper's rules (Table 1); the intent (phase, target) is
+//! written beside them. This is the simulator's own code, independent of the grounding
+//! stage it is there to check: it sees true positions, velocities and grips, where
+//! grounding sees noisy frames.
+//!
+//! `actedOn` is the paper's geometric rule, not the intent: the nearest cube within
+//! `acted_on_distance` of the palm that the hand moves towards, never the one in hand.
+//! So a hand passing close by a cube on its way to another, heading for it, acts on it
+//! for that moment, as the paper's rule says (and as grounding, which cannot know the
+//! intent, sees it). Until the segmentation stage was measured against it, the truth
+//! took only the scripted target; that made a rule no grounding from frames can follow
+//! the reference, and most per-hand sequences differed by a passing Reach.
 
 use std::io::{BufRead, Write};
 
@@ -131,7 +140,8 @@ pub struct HandTruth {
     /// The cube the hand goes for in this phase (the cube to grasp; the cube to stack
     /// on), if any.
     pub target: Option<EntityId>,
-    /// `actedOn`: the target, when it is close and the hand moves towards it.
+    /// `actedOn`: the nearest cube (not the one in hand) that is close and that the hand
+    /// moves towards; the target or not.
     pub acted_on: Option<EntityId>,
     /// `inHand`: the cube the closed hand holds.
     pub in_hand: Option<EntityId>,

@@ -1,0 +1,48 @@
+//! Figures and the report page of `demoplan reproduce`.
+//!
+//! The reproduce command runs the paper's grid (every priority domain, five goals, two
+//! heuristics) and hands the results to this crate as an [`Experiment`]. The crate draws
+//! the paper's figures and writes the report page; it does no I/O: figures come back as
+//! SVG text and PNG bytes, the page as a string.
+//!
+//! - [`search_time_figure`]: Figures 5 and 6, search time per goal on a log axis, one
+//!   line per domain; runs at the time limit are open markers at the limit.
+//! - [`operators_figure`]: Figure 3, operators per type and priority level.
+//! - [`goal_figure`] and [`goals_figure`]: Figure 4, the towers to build.
+//! - [`report_html`]: one self-contained page with the paper's Tables 3 and 4
+//!   ([`search_time_table`], also as Markdown), the figures, the notes and every file.
+//!
+//! Figures use a small drawing model ([`Figure`], [`Shape`]) rendered to SVG and
+//! rasterised by the crate itself (a 5x7 bitmap font, scanline filling, its own PNG
+//! encoder), so no system fonts or drawing libraries are involved and the same input
+//! gives the same bytes.
+//!
+//! ```
+//! use report::{goal_figure, Goal};
+//! let goal = Goal { number: 1, tower: vec!["cube_1".into(), "cube_2".into()] };
+//! let figure = goal_figure(&goal, 6);
+//! assert!(figure.svg().contains("Goal 1"));
+//! assert!(figure.png().starts_with(&report::png::SIGNATURE));
+//! ```
+
+mod draw;
+mod font;
+mod html;
+mod model;
+mod plots;
+pub mod png;
+mod raster;
+
+pub use draw::{pt, text_width, Anchor, Color, Figure, Point, Shape, Stroke, Text};
+pub use html::{
+    html_escape, report_html, search_time_table, Table, PAPER_IPDB, PAPER_LMCUT, PAPER_OPERATORS,
+    PAPER_TITLE, RATIO_ROW,
+};
+pub use model::{
+    domain_label, format_limit, format_seconds, planner_label, ratio, slimming_ratio, time_cell,
+    Bound, Experiment, Goal, Level, Outcome, Ratio, Run, PLANNER_ORDER, TYPE_NAMES,
+};
+pub use plots::{
+    decade_label, goal_figure, goals_figure, operators_figure, search_time_figure, LogScale,
+};
+pub use raster::Canvas;

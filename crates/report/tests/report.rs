@@ -1,0 +1,248 @@
+//! The figures and the page, as the reproduce command uses them.
+
+mod common;
+
+use common::check_markup;
+use report::png::{decode_rgb, SIGNATURE};
+use report::{
+    goal_figure, goals_figure, operators_figure, report_html, search_time_figure,
+    search_time_table, Experiment, Figure, Goal, Level, LogScale, Outcome, Run,
+};
+
+fn figures(exp: &Experiment) -> Vec<(&'static str, Figure)> {
+    vec![
+        ("search-time-lmcut", search_time_figure(exp, "lmcut")),
+        ("search-time-ipdb", search_time_figure(exp, "ipdb")),
+        ("search-time-fd-lmcut", search_time_figure(exp, "fd-lmcut")),
+        ("operators", operators_figure(&exp.levels)),
+        ("goal-1", goal_figure(&exp.goals[0], 6)),
+        ("goal-5", goal_figure(&exp.goals[4], 6)),
+        ("goals", goals_figure(&exp.goals, 6)),
+    ]
+}
+
+fn ihdr_size(png: &[u8]) -> (u32, u32) {
+    assert_eq!(&png[12..16], b"IHDR");
+    let w = u32::from_be_bytes([png[16], png[17], png[18], png[19]]);
+    let h = u32::from_be_bytes([png[20], png[21], png[22], png[23]]);
+    (w, h)
+}
+
+#[test]
+fn svgs_are_well_formed() {
+    let exp = Experiment::example();
+    for (name, fig) in figures(&exp) {
+        let svg = fig.svg();
+        let opened = check_markup(&svg, false).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(opened.first().map(String::as_str), Some("svg"), "{name}");
+        assert!(svg.contains(&format!(
+            r#"width="{}" height="{}""#,
+            fig.width(),
+            fig.height()
+        )));
+        assert!(opened.iter().any(|t| t == "text"), "{name} has no text");
+    }
+}
+
+#[test]
+fn pngs_decode_to_the_raster_at_the_figure_size() {
+    let exp = Experiment::example();
+    for (name, fig) in figures(&exp) {
+        let png = fig.png();
+        assert_eq!(&png[..8], &SIGNATURE, "{name}");
+        assert_eq!(ihdr_size(&png), (fig.width(), fig.height()), "{name}");
+        let (w, h, rgb) = decode_rgb(&png).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!((w, h), (fig.width(), fig.height()));
+        assert_eq!(rgb, fig.raster().pixels(), "{name}");
+        // Something is drawn, and the compression is worth having.
+        assert!(rgb.iter().any(|&b| b != 255), "{name} is blank");
+        assert!(png.len() < rgb.len() / 4, "{name}: {} bytes", png.len());
+    }
+}
+
+#[test]
+fn rendering_is_deterministic() {
+    let a = Experiment::example();
+    let b = Experiment::example();
+    let artefacts = [("x.svg".to_string(), "x".to_string())];
+    for ((_, fa), (_, fb)) in figures(&a).into_iter().zip(figures(&b)) {
+        assert_eq!(fa.svg(), fb.svg());
+        assert_eq!(fa.png(), fb.png());
+    }
+    assert_eq!(report_html(&a, &artefacts), report_html(&b, &artefacts));
+}
+
+#[test]
+fn log_axis_places_decades_evenly_from_a_thousandth_to_above_the_limit() {
+    let exp = Experiment::example();
+    let min = 0.00042 * 0.93;
+    let y = LogScale::covering(min, exp.time_limit, -3, 470.0, 60.0);
+    assert_eq!((y.lo, y.hi), (-4, 3));
+    let step = y.map(1.0) - y.map(10.0);
+    for k in y.lo..y.hi {
+        let d = y.map(10f64.powi(k)) - y.map(10f64.powi(k + 1));
+        assert!((d - step).abs() < 1e-9);
+    }
+    assert!((y.map(60.0) - (y.map(10.0) - step * 60f64.log10().fract())).abs() < 1e-9);
+    // Never faster than a thousandth on the axis if every run took longer.
+    assert_eq!(LogScale::covering(0.5, 60.0, -3, 1.0, 0.0).lo, -3);
+}
+
+#[test]
+fn runs_at_the_limit_show_as_open_markers_with_a_note() {
+    let exp = Experiment::example();
+    let svg = search_time_figure(&exp, "lmcut").svg();
+    assert!(svg.contains("&gt; limit"));
+    assert!(svg.contains("limit 60 s"));
+    assert!(
+        svg.contains(r##"fill="#ffffff" stroke="##),
+        "no open marker"
+    );
+    for label in ["dom1(5)", "dom5(30)", "0.001", "100", "goal (tower height)"] {
+        assert!(svg.contains(label), "{label}");
+    }
+}
+
+#[test]
+fn tables_show_limit_runs_and_bounded_ratios() {
+    let exp = Experiment::example();
+    let table = search_time_table(&exp, "lmcut");
+    assert_eq!(
+        table.header,
+        ["domain", "Goal 1", "Goal 2", "Goal 3", "Goal 4", "Goal 5"]
+    );
+    assert_eq!(table.rows[0][0], "dom1(5)");
+    assert_eq!(table.rows[0][5], "14.3");
+    assert_eq!(table.rows[4][5], "> limit");
+    assert_eq!(table.rows[5][0], report::RATIO_ROW);
+    assert!(table.rows[5][5].starts_with(">= "), "{}", table.rows[5][5]);
+    insta::assert_snapshot!(table.to_markdown());
+}
+
+#[test]
+fn the_page_links_every_artefact_and_shows_the_tables() {
+    let exp = Experiment::example();
+    let artefacts: Vec<(String, String)> = [
+        ("search-time-lmcut.svg", "Search time, LM-cut"),
+        ("search-time-lmcut.png", "Search time, LM-cut (PNG)"),
+        ("figures/operators.svg", "Operators per type"),
+        ("results.csv", "All results"),
+        ("results.json", "All results as JSON"),
+        ("tables.md", "Tables 3 and 4"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    let html = report_html(&exp, &artefacts);
+    check_markup(&html, true).unwrap_or_else(|e| panic!("{e}"));
+    for (path, caption) in &artefacts {
+        assert!(html.contains(&format!("href=\"{path}\"")), "{path}");
+        assert!(html.contains(caption.as_str()), "{caption}");
+    }
+    assert!(html.contains(r#"<img src="search-time-lmcut.svg""#));
+    assert!(html.contains(r#"<img src="figures/operators.svg""#));
+    assert!(html.contains(r#"<a href="search-time-lmcut.png">PNG</a>"#));
+    assert!(!html.contains(r#"<img src="results.csv""#));
+    // A run at the limit reads "> limit" in its table cell.
+    assert!(exp.run("lmcut", 5, 5).map(|r| r.outcome) == Some(Outcome::Limit));
+    assert!(html.contains(">> limit</td>"));
+    // Machine, versions, notes, the goals and both planners' tables.
+    for text in [
+        exp.machine.as_str(),
+        "demoplan 0.1.0; Fast Downward 26.6 (not run)",
+        exp.notes[1].as_str(),
+        "cube_1, cube_2, cube_3, cube_4, cube_5, cube_6",
+        "towers of 2, 3, 4, 5 and 6 cubes",
+        "demoplan astar(ipdb()) (as the paper's Table 3)",
+        "demoplan astar(lmcut()) (as the paper's Table 4)",
+        "1725.18",
+    ] {
+        assert!(html.contains(text), "{text}");
+    }
+    // Self-contained: nothing fetched from elsewhere.
+    assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("<script"));
+}
+
+fn run(planner: &str, prio: usize, goal: usize, outcome: Outcome, t: f64) -> Run {
+    Run {
+        planner: planner.to_string(),
+        prio,
+        operators: prio * 4,
+        goal,
+        outcome,
+        search_time: t,
+        total_time: t,
+        times: vec![t],
+        expansions: None,
+        cost: None,
+        length: None,
+        executed: None,
+    }
+}
+
+#[test]
+fn odd_inputs_draw_without_panicking() {
+    let empty = Experiment {
+        runs: vec![],
+        levels: vec![],
+        goals: vec![],
+        time_limit: 0.0,
+        repeat: 0,
+        seed: 0,
+        machine: String::new(),
+        versions: String::new(),
+        notes: vec![],
+    };
+    let mut odd = empty.clone();
+    odd.time_limit = f64::NAN;
+    odd.runs = vec![
+        run("lmcut", 1, 1, Outcome::Unsolvable, 0.2),
+        run("lmcut", 1, 2, Outcome::Error, f64::NAN),
+        run("lmcut", 2, 1, Outcome::Solved, 0.0),
+        run("lmcut", 2, 2, Outcome::Solved, f64::INFINITY),
+        run("lmcut", 3, 7, Outcome::Limit, 1e12),
+    ];
+    odd.levels = vec![Level {
+        prio: 1,
+        operators: 9,
+        per_type: [0, 0, 0, 0, 0],
+    }];
+    odd.goals = vec![
+        Goal {
+            number: 1,
+            tower: vec![],
+        },
+        Goal {
+            number: 2,
+            tower: vec!["a <red> & \"blue\" cube".to_string(), "cube_99".to_string()],
+        },
+    ];
+    for exp in [&empty, &odd] {
+        let mut figs = vec![
+            search_time_figure(exp, "lmcut"),
+            search_time_figure(exp, "nothing"),
+            operators_figure(&exp.levels),
+            goals_figure(&exp.goals, 3),
+        ];
+        figs.extend(exp.goals.iter().map(|g| goal_figure(g, 0)));
+        for fig in figs {
+            check_markup(&fig.svg(), false).unwrap_or_else(|e| panic!("{e}"));
+            assert!(decode_rgb(&fig.png()).is_ok());
+        }
+        let html = report_html(exp, &[("a&b.svg".to_string(), "<caption>".to_string())]);
+        check_markup(&html, true).unwrap_or_else(|e| panic!("{e}"));
+        assert!(html.contains("href=\"a&amp;b.svg\""));
+    }
+    let table = search_time_table(&odd, "lmcut");
+    assert_eq!(table.rows[0][1], "unsolvable");
+    assert_eq!(table.rows[0][2], "error");
+}
+
+#[test]
+fn goal_figure_snapshot() {
+    let goal = Goal {
+        number: 2,
+        tower: vec!["cube_1".into(), "cube_2".into(), "cube_3".into()],
+    };
+    insta::assert_snapshot!(goal_figure(&goal, 4).svg());
+}

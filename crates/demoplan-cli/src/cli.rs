@@ -284,6 +284,10 @@ pub enum Command {
         /// Cubes on the table in the default scene.
         #[arg(long, value_name = "N", conflicts_with = "from", value_parser = clap::value_parser!(u64).range(2..=64))]
         cubes: Option<u64>,
+        /// Hands in the default scene: 2 (left_hand, right_hand) or 1 (left_hand, a
+        /// one-armed robot).
+        #[arg(long, value_name = "N", conflicts_with = "from", value_parser = clap::value_parser!(u64).range(1..=2))]
+        hands: Option<u64>,
         /// Ground the scene from a recording's frame.
         #[arg(long, value_name = "RECORDING")]
         from: Option<PathBuf>,
@@ -296,5 +300,109 @@ pub enum Command {
         /// Where to write the problem.
         #[arg(short = 'o', long = "out", value_name = "FILE")]
         out: PathBuf,
+    },
+    /// Plan with the paper's Algorithm 1: the domain of priority 1, 2, ... of a library
+    /// until a plan is found.
+    ///
+    /// A level whose goal is unreachable even when deletes are ignored is rejected before
+    /// search; other levels are searched until proven unsolvable or their time limit.
+    /// Prints per level operators, outcome, time, expansions and plan cost, and the
+    /// cumulative time over all levels. Exit 0 with a plan, 11 when every level is
+    /// unsolvable, 12 when none gave a plan and some level reached its time limit.
+    Solve {
+        /// The library.
+        #[arg(value_name = "LIBRARY")]
+        library: PathBuf,
+        /// The problem (e.g. from `demoplan problem`).
+        #[arg(value_name = "PROBLEM")]
+        problem: PathBuf,
+        /// The search, in Fast Downward's syntax.
+        #[arg(long, value_name = "SEARCH", default_value = "astar(lmcut())")]
+        search: String,
+        /// Time limit per level, with Fast Downward's units (`60`, `60s`, `2m`).
+        #[arg(long, value_name = "TIME")]
+        time_limit: Option<String>,
+        /// Who plans: demoplan or fast-downward.
+        #[arg(long, value_name = "PLANNER", default_value = "demoplan")]
+        planner: String,
+        /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
+        #[arg(long, value_name = "PATH")]
+        fd: Option<PathBuf>,
+        /// Also plan on the full domain and print its optimal cost beside the slim plan's.
+        #[arg(long)]
+        compare_full: bool,
+        /// Where to write the plan.
+        #[arg(long, value_name = "FILE", default_value = "sas_plan")]
+        plan_file: PathBuf,
+        /// Keep operators that change nothing in the domains.
+        #[arg(long)]
+        keep_without_effects: bool,
+    },
+    /// Reproduce the paper's experiment: simulate the 12 demonstrations, learn the
+    /// library, build every priority domain, plan the five goals on each with
+    /// astar(lmcut()) and astar(ipdb()), check every plan by execution, and write tables,
+    /// CSV and JSON results, figures and report.html into the output folder.
+    ///
+    /// A run that hits the time limit is shown as "> limit" and ratios involving it are
+    /// lower bounds. The paper's goals 1 to 5 are reconstructed as towers of 2 to 6 cubes.
+    Reproduce {
+        /// The output folder (created if missing).
+        #[arg(
+            short = 'o',
+            long = "out",
+            value_name = "DIR",
+            default_value = "reproduction"
+        )]
+        out: PathBuf,
+        /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
+        #[arg(long, value_name = "TIME", default_value = "60")]
+        time_limit: String,
+        /// Runs per cell; tables show medians.
+        #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
+        repeat: u64,
+        /// The goals to plan, e.g. `1,2,3`.
+        #[arg(
+            long,
+            value_name = "LIST",
+            default_value = "1,2,3,4,5",
+            value_delimiter = ','
+        )]
+        goals: Vec<usize>,
+        /// Only these priority levels, e.g. `1,2` (default: every level).
+        #[arg(long, value_name = "LIST", value_delimiter = ',')]
+        prios: Option<Vec<usize>>,
+        /// Run the same grid with Fast Downward beside demoplan.
+        #[arg(long)]
+        with_fd: bool,
+        /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
+        #[arg(long, value_name = "PATH", requires = "with_fd")]
+        fd: Option<PathBuf>,
+        /// Seed of the simulated demonstrations.
+        #[arg(long, value_name = "N", default_value_t = 7)]
+        seed: u64,
+        /// Hands in the problems' scene: 1 (a one-armed robot, as the paper's TIAGo) or 2.
+        #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=2))]
+        hands: u64,
+    },
+    /// Execute a plan in the cube world and check it step by step.
+    ///
+    /// A table, 5 cm cubes and grippers laid out from the problem's initial state; each
+    /// step becomes motion primitives of its action's type (reach, take, put, stack,
+    /// idle), its frames are grounded with the paper's Table 2 grounding and its effects
+    /// checked; then the goal. Exit 0 when every step and the goal check pass, 1 when
+    /// execution fails, 31 for malformed inputs.
+    Execute {
+        /// The domain file.
+        domain: PathBuf,
+        /// The problem file.
+        problem: PathBuf,
+        /// The plan file: one action `(name arg1 arg2)` per line.
+        plan: PathBuf,
+        /// Write the plan with the poses of hands and cubes per step as JSON.
+        #[arg(long, value_name = "FILE")]
+        json: Option<PathBuf>,
+        /// Write the frames of the execution as a recording (JSON Lines).
+        #[arg(long, value_name = "FILE.jsonl")]
+        frames: Option<PathBuf>,
     },
 }

@@ -161,10 +161,77 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             out,
             keep_without_effects,
         }),
+        cli::Command::Solve {
+            library,
+            problem,
+            search,
+            time_limit,
+            planner,
+            fd,
+            compare_full,
+            plan_file,
+            keep_without_effects,
+        } => {
+            let time_limit = match time_limit.as_deref().map(commands::plan::parse_time_limit) {
+                Some(Ok(limit)) => limit,
+                Some(Err(e)) => {
+                    return Err(Failure::plain(
+                        ExitCode::USAGE,
+                        format!("--time-limit: {e}"),
+                    ))
+                }
+                None => None,
+            };
+            commands::solve::run(commands::solve::SolveArgs {
+                library,
+                problem,
+                search,
+                time_limit,
+                planner,
+                fd,
+                compare_full,
+                plan_file,
+                keep_without_effects,
+            })
+        }
+        cli::Command::Reproduce {
+            out,
+            time_limit,
+            repeat,
+            goals,
+            prios,
+            with_fd,
+            fd,
+            seed,
+            hands,
+        } => {
+            let time_limit = match commands::plan::parse_time_limit(&time_limit) {
+                Ok(Some(limit)) => limit,
+                Ok(None) => std::time::Duration::from_secs(u64::from(u32::MAX)),
+                Err(e) => {
+                    return Err(Failure::plain(
+                        ExitCode::USAGE,
+                        format!("--time-limit: {e}"),
+                    ))
+                }
+            };
+            commands::reproduce::run(commands::reproduce::ReproduceArgs {
+                out,
+                time_limit,
+                repeat: repeat as usize,
+                goals,
+                prios,
+                with_fd,
+                fd,
+                seed,
+                hands: hands as usize,
+            })
+        }
         cli::Command::Problem {
             tower,
             paper_goal,
             cubes,
+            hands,
             from,
             frame,
             config,
@@ -173,10 +240,24 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             tower,
             paper_goal,
             cubes: cubes.map(|c| c as usize),
+            hands: hands.map(|h| h as usize),
             from,
             frame,
             out,
             config,
+        }),
+        cli::Command::Execute {
+            domain,
+            problem,
+            plan,
+            json,
+            frames,
+        } => commands::execute::run(commands::execute::ExecuteArgs {
+            domain,
+            problem,
+            plan,
+            json,
+            frames,
         }),
     }
 }

@@ -475,6 +475,36 @@ fn plan_reads_fast_downwards_output_sas() {
     assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
 }
 
+/// Issue 8: `plan` reports what building a pattern-database heuristic did (the hill
+/// climbing of `ipdb()`) before the search, in Fast Downward's words, so that the
+/// benchmark script can split the time between climb and search.
+#[test]
+fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
+    let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
+    let tmp = tempdir("ipdb-statistics");
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(&sas)
+        .args(["--search", "astar(ipdb())"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let log = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
+    let at = |line: &str| {
+        log.find(line)
+            .unwrap_or_else(|| panic!("no {line:?} in\n{log}"))
+    };
+    let climb = at("\nHill climbing iterations: ");
+    at("\nHill climbing generated patterns: ");
+    at("\nHill climbing time: ");
+    at("\nCanonical PDB heuristic number of patterns: ");
+    let built = at("\nCanonical PDB heuristic computation time: ");
+    let search = at("\nSearch time: ");
+    assert!(climb < built && built < search, "{log}");
+}
+
 #[test]
 fn translate_writes_output_sas_that_plan_reads_back() {
     let tmp = tempdir("translate");
@@ -1103,4 +1133,121 @@ fn demonstration_commands_reject_bad_command_lines_with_exit_36() {
             transcript(&out)
         );
     }
+}
+
+/// A small demoplan-style domain for `execute`: take, lift, stack and let go, and a
+/// reach corrupted to claim a grasp.
+const CUBE_WORLD_DOMAIN: &str = "(define (domain demoplan)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types hand thing - object cube table - thing)
+  (:predicates (handmove ?h - hand) (handopen ?h - hand) (actedon ?h - hand ?x - thing)
+    (graspable ?h - hand ?x - thing) (inhand ?h - hand ?x - thing)
+    (intouch ?x - thing ?y - thing) (ontop ?x - thing ?y - thing))
+  (:action take :parameters (?h - hand ?c1 - cube)
+    :precondition (handopen ?h) :effect (and (not (handopen ?h)) (inhand ?h ?c1)))
+  (:action put :parameters (?h - hand ?c1 - cube ?t - table)
+    :precondition (inhand ?h ?c1)
+    :effect (and (not (ontop ?c1 ?t)) (not (intouch ?c1 ?t)) (not (intouch ?t ?c1))))
+  (:action stack :parameters (?h - hand ?c1 - cube ?c2 - cube)
+    :precondition (inhand ?h ?c1)
+    :effect (and (handopen ?h) (not (inhand ?h ?c1)) (ontop ?c1 ?c2) (intouch ?c1 ?c2)
+      (intouch ?c2 ?c1)))
+  (:action reach :parameters (?h - hand ?c1 - cube)
+    :precondition (handopen ?h) :effect (and (not (handopen ?h)) (inhand ?h ?c1))))";
+
+const CUBE_WORLD_PROBLEM: &str = "(define (problem two) (:domain demoplan)
+  (:objects left_hand right_hand - hand cube_1 cube_2 - cube table - table)
+  (:init (handopen left_hand) (handopen right_hand) (ontop cube_1 table)
+    (intouch cube_1 table) (intouch table cube_1) (ontop cube_2 table)
+    (intouch cube_2 table) (intouch table cube_2))
+  (:goal (ontop cube_2 cube_1)))";
+
+fn execute_cubes(test: &str, plan: &str, extra: &[&str]) -> (Output, PathBuf) {
+    let tmp = tempdir(test);
+    let (d, p) = write_task(&tmp, CUBE_WORLD_DOMAIN, CUBE_WORLD_PROBLEM);
+    std::fs::write(tmp.join("plan"), plan).unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("execute")
+        .arg(d)
+        .arg(p)
+        .arg("plan")
+        .args(extra)
+        .output()
+        .unwrap();
+    (out, tmp)
+}
+
+#[test]
+fn execute_checks_each_step_in_the_cube_world() {
+    let plan = "(take left_hand cube_2)\n(put left_hand cube_2 table)\n\
+                (stack left_hand cube_2 cube_1)\n";
+    let (out, tmp) = execute_cubes(
+        "execute-ok",
+        plan,
+        &["--json", "x.json", "--frames", "x.jsonl"],
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    assert!(
+        text.contains("step 1 (take left_hand cube_2): ok\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("step 3 (stack left_hand cube_2 cube_1): ok\n"),
+        "{text}"
+    );
+    assert!(text.ends_with("goal reached\n"), "{text}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(tmp.join("x.json")).unwrap()).unwrap();
+    assert_eq!(json["format"], "demoplan-execution");
+    assert_eq!(json["version"], 1);
+    assert_eq!(json["steps"][0]["gripper"], "close");
+    assert_eq!(
+        json["steps"][2]["hands"][0]["holding"],
+        serde_json::Value::Null
+    );
+    // The frames are a recording demoplan reads.
+    let inspect = demoplan()
+        .arg("inspect")
+        .arg(tmp.join("x.jsonl"))
+        .output()
+        .unwrap();
+    assert_eq!(inspect.status.code(), Some(0), "{}", transcript(&inspect));
+}
+
+#[test]
+fn execute_names_the_first_step_whose_geometry_fails_and_exits_1() {
+    // The corrupted reach claims a grasp that no reach makes.
+    let plan = "(reach left_hand cube_2)\n(put left_hand cube_2 table)\n\
+                (stack left_hand cube_2 cube_1)\n";
+    let (out, _) = execute_cubes("execute-fails", plan, &[]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{}", transcript(&out));
+    assert!(
+        text.contains(
+            "step 1 (reach left_hand cube_2): FAILED: expected (inhand left_hand cube_2)"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("first failing step: 1 (reach left_hand cube_2)"),
+        "{text}"
+    );
+    assert!(text.contains("goal not reached"), "{text}");
+}
+
+#[test]
+fn execute_input_errors_exit_31_and_command_line_mistakes_36() {
+    let (out, _) = execute_cubes("execute-malformed", "(take left_hand\n", &[]);
+    assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
+    let (out, _) = execute_cubes("execute-unknown", "(fly left_hand cube_2)\n", &[]);
+    assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
+    let (out, _) = execute_cubes("execute-missing", "", &["--frames"]);
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    let out = demoplan()
+        .args(["execute", "no-domain.pddl", "no-problem.pddl", "no-plan"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
 }

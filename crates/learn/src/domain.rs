@@ -261,10 +261,18 @@ pub const DEFAULT_CUBES: usize = 6;
 impl Scene {
     /// Cubes `cube_1` ... `cube_N` on the table, both hands open and still.
     pub fn cubes_on_table(cubes: usize) -> Scene {
+        Scene::with_hands(cubes, DEFAULT_HANDS.len())
+    }
+
+    /// Cubes `cube_1` ... `cube_N` on the table and the first `hands` of
+    /// [`DEFAULT_HANDS`] (at least one), open and still. One hand is a one-armed robot
+    /// such as the paper's TIAGo.
+    pub fn with_hands(cubes: usize, hands: usize) -> Scene {
+        let hands = &DEFAULT_HANDS[..hands.clamp(1, DEFAULT_HANDS.len())];
         let cubes: Vec<String> = (1..=cubes).map(|i| format!("cube_{i}")).collect();
         let table = "table".to_string();
         let mut facts = Vec::new();
-        for h in DEFAULT_HANDS {
+        for h in hands {
             facts.push((Predicate::HandOpen, vec![h.to_string()]));
         }
         for c in &cubes {
@@ -272,7 +280,7 @@ impl Scene {
             facts.push((Predicate::OnTop, vec![c.clone(), table.clone()]));
         }
         Scene {
-            hands: DEFAULT_HANDS.iter().map(|h| h.to_string()).collect(),
+            hands: hands.iter().map(|h| h.to_string()).collect(),
             cubes,
             table,
             others: Vec::new(),

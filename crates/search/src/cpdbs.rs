@@ -242,6 +242,11 @@ impl std::fmt::Display for PdbStatistics {
                 "Hill climbing rejected patterns: {}",
                 c.rejected_patterns
             )?;
+            writeln!(
+                f,
+                "Hill climbing patterns dropped for lack of room: {}",
+                c.dropped_patterns
+            )?;
             writeln!(f, "Hill climbing maximum PDB size: {}", c.max_pdb_size)?;
             writeln!(f, "Hill climbing ended: {}", c.end)?;
             writeln!(f, "Hill climbing time: {:.6}s", c.time.as_secs_f64())?;

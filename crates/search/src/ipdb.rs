@@ -40,6 +40,14 @@
 //! state is a dead end, at `max_time`, at the caller's deadline or memory limit, or once
 //! `max_generated_patterns` candidates were generated.
 //!
+//! Without `max_time` (unlimited, Fast Downward's default) but with a caller's deadline
+//! (`demoplan plan --overall-time-limit`), the climb takes at most half the time left
+//! before that deadline, so that the search gets the other half with the collection found
+//! so far. Fast Downward's climb would take all of it and leave the search none: where
+//! the climb is that slow (large neighbourhoods of patterns over variables with large
+//! domains, e.g. pipesworld's batch positions under demoplan's translation), a search
+//! with the collection found by then mostly finishes quickly.
+//!
 //! The default options are Fast Downward's (`pdb_max_size=2000000`,
 //! `collection_max_size=20000000`, `num_samples=1000`, `min_improvement=10`, no time
 //! limit); the random walks use a fixed-seed generator (SplitMix64, seed 0 by default), so
@@ -68,7 +76,8 @@ pub struct IpdbConfig {
     pub num_samples: u32,
     /// Fewest improved samples for a candidate to be added.
     pub min_improvement: u32,
-    /// Time limit of the climb (`None`: unlimited).
+    /// Time limit of the climb (`None`: unlimited, but at most half the time left before
+    /// the caller's deadline if there is one; see the module documentation).
     pub max_time: Option<Duration>,
     /// Seed of the random walks.
     pub random_seed: u64,
@@ -130,8 +139,11 @@ pub struct HillClimbingStatistics {
     pub iterations: u32,
     /// Candidate patterns generated, each with its database.
     pub generated_patterns: u64,
-    /// Candidates dropped because the collection had no room left for them.
+    /// Patterns not generated because their database would exceed `pdb_max_size`,
+    /// counted each time one comes up (Fast Downward's "rejected patterns").
     pub rejected_patterns: u64,
+    /// Candidates dropped because the collection had no room left for them.
+    pub dropped_patterns: u64,
     /// The largest database generated, in abstract states.
     pub max_pdb_size: u64,
     /// Patterns in the collection at the end of the climb.
@@ -189,17 +201,32 @@ pub(crate) fn hill_climbing(
     limits: &SearchLimits,
 ) -> (Vec<PatternDatabase>, HillClimbingStatistics) {
     let start = Instant::now();
-    let own_deadline = config.max_time.and_then(|t| start.checked_add(t));
-    let deadline = match (own_deadline, limits.deadline) {
-        (Some(a), Some(b)) => Some(a.min(b)),
-        (a, b) => a.or(b),
-    };
+    let deadline = climb_deadline(start, config.max_time, limits.deadline);
     let mut climb = Climb::new(task, config, limits, deadline);
     climb.stats.end = climb.run();
     climb.stats.patterns = climb.collection.len();
     climb.stats.total_size = climb.collection_size;
     climb.stats.time = start.elapsed();
     (climb.collection, climb.stats)
+}
+
+/// When a climb begun at `start` must end: `max_time` after `start`, but not after the
+/// caller's `deadline`; without `max_time`, half the time left before `deadline` (see the
+/// module documentation). `None`: never.
+fn climb_deadline(
+    start: Instant,
+    max_time: Option<Duration>,
+    deadline: Option<Instant>,
+) -> Option<Instant> {
+    let own = match max_time {
+        Some(t) => start.checked_add(t),
+        // The other half is the search's.
+        None => deadline.map(|d| start + d.saturating_duration_since(start) / 2),
+    };
+    match (own, deadline) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+    }
 }
 
 /// The state of a climb.
@@ -399,6 +426,7 @@ impl<'t> Climb<'t> {
             candidate.insert(at, VarId(w));
             let limit = self.config.pdb_max_size.min(MAX_PDB_SIZE);
             let Some(size) = pattern_size(self.task, &candidate, limit) else {
+                self.stats.rejected_patterns += 1;
                 continue;
             };
             if self.generated.contains(&candidate) {
@@ -416,7 +444,7 @@ impl<'t> Climb<'t> {
             if size > room {
                 // The room only shrinks: it would be rejected at its first evaluation.
                 self.generated.insert(candidate);
-                self.stats.rejected_patterns += 1;
+                self.stats.dropped_patterns += 1;
                 continue;
             }
             let pdb = self.build(&candidate);
@@ -542,7 +570,7 @@ impl<'t> Climb<'t> {
             if candidate.pdb.size() as u64 > room {
                 self.table_bytes -= candidate.pdb.memory_bytes() as u64;
                 *slot = None;
-                self.stats.rejected_patterns += 1;
+                self.stats.dropped_patterns += 1;
                 continue;
             }
             while candidate.additive.len() < patterns {
@@ -951,25 +979,42 @@ mod tests {
         let mut h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
         assert_eq!(h.evaluate(&[0, 0, 0]), Some(1));
         let climb = h.statistics().hill_climbing.clone().unwrap();
-        assert_eq!((climb.rejected_patterns, climb.patterns), (1, 1));
-        // Nor is it generated when too large, and a zero time limit stops at once.
-        for config in [
-            IpdbConfig {
-                pdb_max_size: 3,
-                ..IpdbConfig::default()
-            },
-            IpdbConfig {
-                max_time: Some(Duration::ZERO),
-                ..IpdbConfig::default()
-            },
-            IpdbConfig {
-                max_generated_patterns: Some(0),
-                ..IpdbConfig::default()
-            },
+        assert_eq!((climb.dropped_patterns, climb.patterns), (1, 1));
+        // Nor is it generated when too large (then it counts as rejected, as in Fast
+        // Downward), and a zero time limit stops at once.
+        for (config, rejected) in [
+            (
+                IpdbConfig {
+                    pdb_max_size: 3,
+                    ..IpdbConfig::default()
+                },
+                1,
+            ),
+            (
+                IpdbConfig {
+                    max_time: Some(Duration::ZERO),
+                    ..IpdbConfig::default()
+                },
+                0,
+            ),
+            (
+                IpdbConfig {
+                    max_generated_patterns: Some(0),
+                    ..IpdbConfig::default()
+                },
+                0,
+            ),
         ] {
             let h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
             let climb = h.statistics().hill_climbing.clone().unwrap();
-            assert_eq!((climb.generated_patterns, climb.patterns), (0, 1));
+            assert_eq!(
+                (
+                    climb.generated_patterns,
+                    climb.rejected_patterns,
+                    climb.patterns
+                ),
+                (0, rejected, 1)
+            );
         }
         // The caller's limits stop it too.
         let past = SearchLimits {
@@ -1018,6 +1063,23 @@ mod tests {
         let h = ipdb(&dead, &IpdbConfig::default(), &SearchLimits::default()).unwrap();
         let climb = h.statistics().hill_climbing.clone().unwrap();
         assert_eq!(climb.end, ClimbEnd::InitialDeadEnd);
+    }
+
+    #[test]
+    fn the_climb_leaves_half_the_time_to_the_search_unless_told_otherwise() {
+        let start = Instant::now();
+        let s = |secs| Duration::from_secs(secs);
+        let at = |secs| Some(start + s(secs));
+        assert_eq!(climb_deadline(start, None, None), None);
+        assert_eq!(climb_deadline(start, None, at(10)), at(5));
+        assert_eq!(climb_deadline(start, Some(s(3)), None), at(3));
+        assert_eq!(climb_deadline(start, Some(s(3)), at(10)), at(3));
+        assert_eq!(climb_deadline(start, Some(s(20)), at(10)), at(10));
+        // A deadline already past stays the deadline: the climb stops at once.
+        let past = start.checked_sub(s(1));
+        if past.is_some() {
+            assert_eq!(climb_deadline(start, None, past), past);
+        }
     }
 
     /// `count_improvements` against its definition, on random cliques and values.

@@ -421,6 +421,7 @@ pub struct ProblemArgs {
     pub tower: Option<String>,
     pub paper_goal: Option<usize>,
     pub cubes: Option<usize>,
+    pub hands: Option<usize>,
     pub from: Option<PathBuf>,
     pub frame: Option<u64>,
     pub out: PathBuf,
@@ -430,8 +431,9 @@ pub struct ProblemArgs {
 /// The scene of a problem: grounded from a recording's frame, or the default.
 fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
     let Some(path) = &args.from else {
-        return Ok(Scene::cubes_on_table(
+        return Ok(Scene::with_hands(
             args.cubes.unwrap_or(learn::DEFAULT_CUBES),
+            args.hands.unwrap_or(learn::DEFAULT_HANDS.len()),
         ));
     };
     let config = demo_input::config(args.config.as_deref())?;

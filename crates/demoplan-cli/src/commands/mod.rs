@@ -3,12 +3,15 @@
 pub mod check;
 pub mod classify;
 pub mod demo_input;
+pub mod execute;
 pub mod fmt;
 pub mod inspect;
 pub mod library;
 pub mod plan;
+pub mod reproduce;
 pub mod segment;
 pub mod simulate;
+pub mod solve;
 pub mod timeline;
 pub mod translate;
 pub mod validate;

@@ -146,8 +146,19 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             start.elapsed().as_secs_f64()
         );
     };
-    let result = search::search(&task, &config, &limits, Some(&mut observer))
+    // The heuristic first, so that what building it did (the hill climbing of ipdb())
+    // is reported before the search, as Fast Downward does.
+    let mut heuristic = config
+        .heuristic
+        .build_with_limits(&task, &limits)
         .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?;
+    if let Some(s) = heuristic.pdb_statistics() {
+        println!("{s}");
+    }
+    let result = match config.engine {
+        search::Engine::AStar => search::astar(&task, &mut heuristic, &limits, Some(&mut observer)),
+    }
+    .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?;
     let stats = &result.statistics;
     if let Some(h) = stats.initial_h {
         println!("Initial heuristic value: {h}");

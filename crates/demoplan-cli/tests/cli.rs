@@ -1251,3 +1251,268 @@ fn execute_input_errors_exit_31_and_command_line_mistakes_36() {
         .unwrap();
     assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
 }
+
+/// The library of the embedded default study, learned through the command line.
+fn learned_library(test: &str) -> PathBuf {
+    let tmp = tempdir(test);
+    let sim = demoplan()
+        .args(["simulate", "-o"])
+        .arg(tmp.join("sim"))
+        .output()
+        .unwrap();
+    assert_eq!(sim.status.code(), Some(0), "{}", transcript(&sim));
+    let mut recordings: Vec<PathBuf> = std::fs::read_dir(tmp.join("sim"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
+        })
+        .collect();
+    recordings.sort();
+    assert_eq!(recordings.len(), 12);
+    let library = tmp.join("library.json");
+    // Half first, then the rest added to the library: incremental learning.
+    let first = demoplan()
+        .arg("learn")
+        .args(&recordings[..6])
+        .arg("-o")
+        .arg(&library)
+        .output()
+        .unwrap();
+    assert_eq!(first.status.code(), Some(0), "{}", transcript(&first));
+    let rest = demoplan()
+        .arg("learn")
+        .args(&recordings[5..])
+        .arg("--library")
+        .arg(&library)
+        .arg("-o")
+        .arg(&library)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&rest.stdout).into_owned();
+    assert_eq!(rest.status.code(), Some(0), "{}", transcript(&rest));
+    // The sixth recording was in both batches and is counted once.
+    assert!(
+        text.contains("already in the library (same content), not counted again"),
+        "{text}"
+    );
+    // The same as learning all at once.
+    let batch = tmp.join("batch.json");
+    let all = demoplan()
+        .arg("learn")
+        .args(&recordings)
+        .arg("-o")
+        .arg(&batch)
+        .output()
+        .unwrap();
+    assert_eq!(all.status.code(), Some(0), "{}", transcript(&all));
+    assert_eq!(
+        std::fs::read(&batch).unwrap(),
+        std::fs::read(&library).unwrap()
+    );
+    library
+}
+
+#[test]
+fn learn_operators_domain_problem_and_solve_work_together() {
+    let library = learned_library("library-commands");
+    let tmp = library.parent().unwrap().to_path_buf();
+    let cards = demoplan()
+        .args(["operators", "--markdown"])
+        .arg(&library)
+        .output()
+        .unwrap();
+    let md = String::from_utf8_lossy(&cards.stdout).into_owned();
+    assert_eq!(cards.status.code(), Some(0), "{}", transcript(&cards));
+    assert!(md.contains("## reach (Reach, count "), "{md}");
+    assert!(md.contains("| fact | precondition | effect |"), "{md}");
+    // Levels, then the priority-2 domain and a problem that parse in demoplan.
+    let levels = demoplan().arg("domain").arg(&library).output().unwrap();
+    assert_eq!(levels.status.code(), Some(0), "{}", transcript(&levels));
+    let domain = tmp.join("prio-2.pddl");
+    let d = demoplan()
+        .arg("domain")
+        .arg(&library)
+        .args(["--prio", "2", "-o"])
+        .arg(&domain)
+        .output()
+        .unwrap();
+    assert_eq!(d.status.code(), Some(0), "{}", transcript(&d));
+    let problem = tmp.join("goal-1.pddl");
+    let p = demoplan()
+        .args(["problem", "--paper-goal", "1", "--hands", "1", "-o"])
+        .arg(&problem)
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let check = demoplan()
+        .arg("check")
+        .arg(&domain)
+        .arg(&problem)
+        .output()
+        .unwrap();
+    assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
+    // Algorithm 1: priority 1 is rejected before search, a later level plans.
+    let plan = tmp.join("plan");
+    let solve = demoplan()
+        .arg("solve")
+        .arg(&library)
+        .arg(&problem)
+        .args(["--time-limit", "60", "--plan-file"])
+        .arg(&plan)
+        .output()
+        .unwrap();
+    let log = String::from_utf8_lossy(&solve.stdout).into_owned();
+    assert_eq!(solve.status.code(), Some(0), "{}", transcript(&solve));
+    assert!(log.contains("relaxed-unreachable"), "{log}");
+    assert!(log.contains("Solution found at priority"), "{log}");
+    // The plan validates on the domain it was found in and executes in the cube world.
+    let level: String = log
+        .lines()
+        .find_map(|l| l.strip_prefix("Solution found at priority "))
+        .and_then(|rest| rest.split(' ').next())
+        .unwrap()
+        .to_string();
+    let level_domain = tmp.join(format!("prio-{level}.pddl"));
+    let d = demoplan()
+        .arg("domain")
+        .arg(&library)
+        .args(["--prio", &level, "-o"])
+        .arg(&level_domain)
+        .output()
+        .unwrap();
+    assert_eq!(d.status.code(), Some(0), "{}", transcript(&d));
+    let v = demoplan()
+        .arg("validate")
+        .arg(&level_domain)
+        .arg(&problem)
+        .arg(&plan)
+        .output()
+        .unwrap();
+    assert_eq!(v.status.code(), Some(0), "{}", transcript(&v));
+    let x = demoplan()
+        .arg("execute")
+        .arg(&level_domain)
+        .arg(&problem)
+        .arg(&plan)
+        .output()
+        .unwrap();
+    assert_eq!(x.status.code(), Some(0), "{}", transcript(&x));
+    // A damaged library is an input error and is not overwritten.
+    let damaged = tmp.join("damaged.json");
+    std::fs::write(
+        &damaged,
+        "{\"format\": \"demoplan-library\", \"version\": 1,\n  \"lambda\": }",
+    )
+    .unwrap();
+    let bad = demoplan()
+        .arg("learn")
+        .arg(tmp.join("sim/p01-d01.jsonl"))
+        .arg("--library")
+        .arg(&damaged)
+        .arg("-o")
+        .arg(&damaged)
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(31), "{}", transcript(&bad));
+    assert!(
+        String::from_utf8_lossy(&bad.stderr).contains("damaged.json:2"),
+        "{}",
+        transcript(&bad)
+    );
+    assert!(std::fs::read_to_string(&damaged)
+        .unwrap()
+        .ends_with("\"lambda\": }"));
+    let newer = tmp.join("newer.json");
+    std::fs::write(&newer, "{\"format\": \"demoplan-library\", \"version\": 2}").unwrap();
+    let bad = demoplan().arg("operators").arg(&newer).output().unwrap();
+    assert_eq!(bad.status.code(), Some(31), "{}", transcript(&bad));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("newer than this demoplan reads"));
+}
+
+#[test]
+fn reproduce_writes_every_artefact_on_a_reduced_grid() {
+    let tmp = tempdir("reproduce");
+    let out = tmp.join("out");
+    let run = demoplan()
+        .arg("reproduce")
+        .arg("-o")
+        .arg(&out)
+        .args(["--prios", "2,4", "--goals", "1,2,3", "--time-limit", "5"])
+        .output()
+        .unwrap();
+    let log = String::from_utf8_lossy(&run.stdout).into_owned();
+    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    assert!(log.contains("Table 3: A* with iPDB"), "{log}");
+    let read = |name: &str| std::fs::read_to_string(out.join(name)).unwrap();
+    // The library reads back; domains and problems parse and fit each other.
+    let library = read("library.json");
+    assert!(library.starts_with("{\n  \"format\": \"demoplan-library\""));
+    for prio in [2, 4] {
+        let domain = pddl::parse_domain(&read(&format!("domains/prio-{prio}.pddl"))).unwrap();
+        for goal in 1..=3 {
+            let problem =
+                pddl::parse_problem(&read(&format!("problems/goal-{goal}.pddl"))).unwrap();
+            pddl::check_problem(&domain, &problem).unwrap();
+        }
+    }
+    // Tables, CSV and JSON: one row per planner x domain x goal.
+    let tables = read("tables.md");
+    assert!(
+        tables.contains("## Table 4: A* with LM-cut (demoplan)"),
+        "{tables}"
+    );
+    let csv = read("results.csv");
+    assert_eq!(csv.lines().count(), 1 + 2 * 2 * 3, "{csv}");
+    let json: serde_json::Value = serde_json::from_str(&read("results.json")).unwrap();
+    assert_eq!(json["format"], "demoplan-reproduce");
+    let runs = json["runs"].as_array().unwrap();
+    assert_eq!(runs.len(), 12);
+    // Every plan found executes in the cube world and is written.
+    let mut solved = 0;
+    for r in runs {
+        if r["outcome"] == "solved" {
+            solved += 1;
+            assert_eq!(r["executed"], true, "{r}");
+            let name = format!(
+                "plans/{}-prio-{}-goal-{}.plan",
+                r["planner"].as_str().unwrap(),
+                r["prio"],
+                r["goal"]
+            );
+            assert!(read(&name).contains("; cost = "), "{name}");
+        }
+    }
+    assert!(solved >= 4, "{csv}");
+    // Figures as SVG and PNG, and the page that links them.
+    for figure in [
+        "search-time-lmcut",
+        "search-time-ipdb",
+        "operators",
+        "goal-1",
+        "goal-2",
+        "goal-3",
+    ] {
+        let svg = read(&format!("figures/{figure}.svg"));
+        assert!(
+            svg.trim_start().starts_with("<svg") || svg.starts_with("<?xml"),
+            "{figure}"
+        );
+        assert!(svg.trim_end().ends_with("</svg>"), "{figure}");
+        let png = std::fs::read(out.join(format!("figures/{figure}.png"))).unwrap();
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{figure}");
+    }
+    let html = read("report.html");
+    for link in [
+        "figures/search-time-lmcut.svg",
+        "figures/operators.svg",
+        "tables.md",
+        "results.csv",
+        "results.json",
+        "operators.md",
+    ] {
+        assert!(html.contains(link), "report.html does not link {link}");
+    }
+    assert!(read("operators.md").contains("# Operator cards"));
+}

@@ -1516,3 +1516,51 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
     }
     assert!(read("operators.md").contains("# Operator cards"));
 }
+
+#[test]
+fn fast_downward_backends_say_clearly_when_it_is_missing() {
+    let tmp = tempdir("fd-missing");
+    let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");
+    let problem = tmp.join("p.pddl");
+    let p = demoplan()
+        .args(["problem", "--tower", "cube_1,cube_2", "-o"])
+        .arg(&problem)
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let solve: Vec<std::ffi::OsString> = vec![
+        "solve".into(),
+        library.into(),
+        problem.into(),
+        "--planner".into(),
+        "fast-downward".into(),
+    ];
+    let reproduce: Vec<std::ffi::OsString> = vec![
+        "reproduce".into(),
+        "-o".into(),
+        "out".into(),
+        "--with-fd".into(),
+    ];
+    for args in [solve, reproduce] {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .env_remove("DEMOPLAN_FD")
+            .args(&args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+        assert!(err.contains("Fast Downward not found"), "{err}");
+        assert!(err.contains("DEMOPLAN_FD"), "{err}");
+    }
+    let out = demoplan()
+        .current_dir(&tmp)
+        .env("DEMOPLAN_FD", tmp.join("nowhere/fast-downward.py"))
+        .args(["reproduce", "-o", "out", "--with-fd"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is not a file"));
+    // Nothing was written before the check.
+    assert!(!tmp.join("out").exists());
+}

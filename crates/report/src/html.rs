@@ -251,6 +251,9 @@ fn paper_table(s: &mut String, caption: &str, times: &[[&str; 5]; 5]) {
 /// The number of cubes the goals are built from: the highest `cube_N` named, at least
 /// the tallest tower.
 fn scene_cubes(exp: &Experiment) -> usize {
+    if exp.cubes > 0 {
+        return exp.cubes;
+    }
     let tallest = exp.goals.iter().map(|g| g.tower.len()).max().unwrap_or(0);
     let named = exp
         .goals
@@ -351,9 +354,14 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
             "<p><strong>The goals.</strong> The paper shows its five goals only as pictures of \
              increasingly tall stacks (its Figure 4; goal 5 needs at least 20 actions). demoplan \
              reconstructs them as towers of {} cubes, built from {} cubes that start on the \
-             table; a goal is the tower's <code>onTop</code> facts, bottom first:</p>",
+             table{}; a goal is the tower's <code>onTop</code> facts, bottom first:</p>",
             list_words(&heights),
-            scene_cubes(exp)
+            scene_cubes(exp),
+            match exp.hands {
+                0 => String::new(),
+                1 => " with one hand (a one-armed robot, as the paper's TIAGo)".to_string(),
+                n => format!(" with {n} hands"),
+            }
         );
         s.push_str("<table class=\"goals\">\n<thead><tr><th>goal</th><th>tower, bottom first</th><th>cubes</th></tr></thead>\n<tbody>\n");
         for g in &goals {

@@ -79,6 +79,12 @@ pub struct Experiment {
     pub versions: String,
     /// Findings written by reproduce (ratios, honest statements), shown in the report.
     pub notes: Vec<String>,
+    /// Cubes on the table in the problems' scene (0: the highest `cube_N` of the goals).
+    #[serde(default)]
+    pub cubes: usize,
+    /// Hands in the problems' scene (0: not said).
+    #[serde(default)]
+    pub hands: usize,
 }
 
 impl Experiment {
@@ -208,6 +214,8 @@ impl Experiment {
                 "A made-up experiment: the paper's Tables 3 and 4 under a 60 s limit.".to_string(),
                 "Goal 5, largest over smallest domain: >= 24x (iPDB), >= 4.2x (LM-cut); the paper reports 72x and 120x.".to_string(),
             ],
+            cubes: 6,
+            hands: 1,
         }
     }
 }
@@ -407,6 +415,8 @@ mod tests {
             machine: String::new(),
             versions: String::new(),
             notes: vec![],
+            cubes: 0,
+            hands: 0,
         };
         assert_eq!(
             slimming_ratio(&exp, "lmcut", 5).map(|r| r.bound),

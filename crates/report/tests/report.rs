@@ -192,6 +192,8 @@ fn odd_inputs_draw_without_panicking() {
         machine: String::new(),
         versions: String::new(),
         notes: vec![],
+        cubes: 0,
+        hands: 0,
     };
     let mut odd = empty.clone();
     odd.time_limit = f64::NAN;

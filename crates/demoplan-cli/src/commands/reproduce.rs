@@ -725,6 +725,8 @@ fn experiment(
             }
         ),
         notes: notes.to_vec(),
+        cubes: learn::DEFAULT_CUBES,
+        hands: args.hands,
     }
 }
 

@@ -209,7 +209,9 @@ pub enum Command {
     /// operator; equal operators are merged and counted, and each gets the cost
     /// ceil(lambda * (1 - count / type count)). With `--library`, the recordings are added
     /// to an existing library; a recording already in it (same content) is not counted
-    /// again. Prints per type the operators with count and cost.
+    /// again. Prints per type the operators with count and cost. The library is written
+    /// atomically and durably; learners writing one library take turns through its lock
+    /// file (FILE.lock), so none loses another's counts.
     Learn {
         /// Recordings (JSON Lines).
         #[arg(value_name = "RECORDING", required = true)]
@@ -229,6 +231,11 @@ pub enum Command {
         /// The activity tree as JSON; default: Table 1.
         #[arg(long, value_name = "FILE")]
         tree: Option<PathBuf>,
+        /// How long to wait while another learner writes the same library (its lock,
+        /// FILE.lock, is held), with Fast Downward's units (`10`, `10s`, `2m`,
+        /// `infinity`); then exit 75.
+        #[arg(long, value_name = "TIME", default_value = "10s")]
+        lock_timeout: String,
     },
     /// Print a library's operators as cards (the paper's Figure 2): preconditions and
     /// effects side by side, count, cost and the recordings that show it.

@@ -30,4 +30,8 @@ impl ExitCode {
     /// Fast Downward's DRIVER_INPUT_ERROR: a bad command line, a missing input file, no
     /// domain file found by the naming rules.
     pub const USAGE: ExitCode = ExitCode(36);
+    /// Not Fast Downward's (it has no such case): another process held the lock of the
+    /// file to write for longer than the wait allowed. A temporary failure, worth trying
+    /// again: the code is `EX_TEMPFAIL` of BSD's sysexits.h.
+    pub const LOCKED: ExitCode = ExitCode(75);
 }

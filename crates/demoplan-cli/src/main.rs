@@ -137,14 +137,20 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             lambda,
             config,
             tree,
-        } => commands::library::learn(commands::library::LearnArgs {
-            files,
-            library,
-            out,
-            lambda,
-            config,
-            tree,
-        }),
+            lock_timeout,
+        } => commands::plan::parse_time_limit(&lock_timeout)
+            .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))
+            .and_then(|lock_timeout| {
+                commands::library::learn(commands::library::LearnArgs {
+                    files,
+                    library,
+                    out,
+                    lambda,
+                    config,
+                    tree,
+                    lock_timeout,
+                })
+            }),
         cli::Command::Operators { library, markdown } => {
             commands::library::operators(commands::library::OperatorsArgs { library, markdown })
         }

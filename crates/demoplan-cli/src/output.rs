@@ -1,23 +1,48 @@
 //! Writing output files.
+//!
+//! Every file is written to a temporary file in the same folder (`.NAME.demoplan-tmp-PID`)
+//! and renamed over its target, so a process killed at any moment leaves either the old
+//! file or the new one, never a half-written one: the rename is atomic. That guarantee is
+//! about the process; against a power loss or a kernel crash the data must also reach the
+//! disk before the rename, which only [`write_durably`] (the operator library) pays for
+//! with `fsync` of the file and of its folder. Other outputs (plans, figures, recordings)
+//! can be made again and skip the `fsync`s.
+//!
+//! [`WriteLock`] is the advisory lock that keeps two learners from writing one library at
+//! once (`docs/reliability.md`).
 
-use std::path::Path;
+use std::fs::{File, OpenOptions, TryLockError};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
 
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 
-/// Writes through a temporary file in the same folder and a rename, so that a crash never
-/// leaves a half-written file.
+/// Writes through a temporary file in the same folder and a rename, so that a killed
+/// process never leaves a half-written file.
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {
-    write_atomically_with(path, |out| out.write_all(text.as_bytes()))
+    write_via_temporary(path, false, |out| out.write_all(text.as_bytes()))
+}
+
+/// Like [`write_atomically`], and durable: the temporary file is flushed to the disk
+/// (`fsync`) before the rename and the folder after it, so that after a power loss the
+/// path holds the old or the new content too.
+pub fn write_durably(path: &Path, text: &str) -> Result<(), Failure> {
+    write_via_temporary(path, true, |out| out.write_all(text.as_bytes()))
 }
 
 /// Like [`write_atomically`], for output produced piece by piece: `produce` writes into a
 /// buffered temporary file that replaces `path` only once all of it is written.
 pub fn write_atomically_with(
     path: &Path,
-    produce: impl FnOnce(&mut dyn std::io::Write) -> std::io::Result<()>,
+    produce: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), Failure> {
-    use std::io::Write;
+    write_via_temporary(path, false, produce)
+}
+
+/// The folder of `path` and its file name.
+fn folder_and_name(path: &Path) -> (&Path, String) {
     let dir = path
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
@@ -26,7 +51,21 @@ pub fn write_atomically_with(
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.demoplan-tmp-{}", std::process::id()));
+    (dir, name)
+}
+
+/// The prefix of the temporary files of writers of `path`, before the writer's pid.
+fn temporary_prefix(name: &str) -> String {
+    format!(".{name}.demoplan-tmp-")
+}
+
+fn write_via_temporary(
+    path: &Path,
+    durable: bool,
+    produce: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), Failure> {
+    let (dir, name) = folder_and_name(path);
+    let tmp = dir.join(format!("{}{}", temporary_prefix(&name), std::process::id()));
     let fail = |e: std::io::Error| {
         let _ = std::fs::remove_file(&tmp);
         Failure::plain(
@@ -34,10 +73,159 @@ pub fn write_atomically_with(
             format!("cannot write {}: {e}", path.display()),
         )
     };
-    let file = std::fs::File::create(&tmp).map_err(fail)?;
+    let file = File::create(&tmp).map_err(fail)?;
     let mut out = std::io::BufWriter::with_capacity(1 << 20, file);
     produce(&mut out).map_err(fail)?;
-    out.flush().map_err(fail)?;
-    drop(out);
-    std::fs::rename(&tmp, path).map_err(fail)
+    let file = out.into_inner().map_err(|e| fail(e.into_error()))?;
+    if durable {
+        file.sync_all().map_err(fail)?;
+    }
+    drop(file);
+    std::fs::rename(&tmp, path).map_err(fail)?;
+    if durable {
+        sync_folder(dir);
+    }
+    Ok(())
+}
+
+/// Makes a rename in `dir` durable. Best effort: some systems cannot open or sync a
+/// folder, and the file is in place either way.
+fn sync_folder(dir: &Path) {
+    if cfg!(unix) {
+        if let Ok(d) = File::open(dir) {
+            let _ = d.sync_all();
+        }
+    }
+}
+
+/// Removes the temporary files that writers of `path` killed before their rename left
+/// behind (`.NAME.demoplan-tmp-PID`). They never damage anything (each writer uses its own
+/// name and removes it on failure), they only take space. Call it only while holding the
+/// [`WriteLock`] of `path`: every other writer of `path` holds it while its temporary file
+/// exists, so those found then are stale. Returns how many were removed.
+pub fn remove_stale_temporaries(path: &Path) -> usize {
+    let (dir, name) = folder_and_name(path);
+    let prefix = temporary_prefix(&name);
+    let own = std::process::id().to_string();
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return 0;
+    };
+    let mut removed = 0;
+    for entry in entries.flatten() {
+        let file_name = entry.file_name();
+        let Some(pid) = file_name.to_str().and_then(|n| n.strip_prefix(&prefix)) else {
+            continue;
+        };
+        if pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) || pid == own {
+            continue;
+        }
+        if std::fs::remove_file(entry.path()).is_ok() {
+            removed += 1;
+        }
+    }
+    removed
+}
+
+/// An advisory lock on `PATH.lock` (an exclusive `flock` on Unix, `LockFileEx` on
+/// Windows), held by a writer of `PATH` from reading it until its new content is renamed
+/// into place, so that writers that read, change and write one file take turns and no
+/// update is lost. The lock file holds the holder's pid (for messages); it is left in
+/// place when the lock is released, since removing it would let two writers lock two
+/// different files. The operating system releases the lock when its holder dies, so a
+/// killed writer never blocks the next one.
+#[derive(Debug)]
+pub struct WriteLock {
+    _file: File,
+}
+
+/// The lock file of `path`: `PATH.lock`.
+pub fn lock_path(path: &Path) -> PathBuf {
+    let mut name = path.as_os_str().to_owned();
+    name.push(".lock");
+    PathBuf::from(name)
+}
+
+impl WriteLock {
+    /// Takes the lock of `path`, waiting at most `timeout` (`None`: as long as it takes)
+    /// for another holder. A lock still held after the wait is [`ExitCode::LOCKED`],
+    /// with a message naming the lock file and the holder's pid.
+    pub fn acquire(path: &Path, timeout: Option<Duration>) -> Result<WriteLock, Failure> {
+        let lock = lock_path(path);
+        let file = OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(&lock)
+            .map_err(|e| {
+                Failure::plain(
+                    ExitCode::CRITICAL_ERROR,
+                    format!(
+                        "cannot write {}: cannot open its lock file {}: {e}",
+                        path.display(),
+                        lock.display()
+                    ),
+                )
+            })?;
+        let start = Instant::now();
+        let mut told = false;
+        loop {
+            match file.try_lock() {
+                Ok(()) => break,
+                Err(TryLockError::WouldBlock) => {}
+                Err(TryLockError::Error(e)) => {
+                    return Err(Failure::plain(
+                        ExitCode::CRITICAL_ERROR,
+                        format!(
+                            "cannot write {}: cannot lock {}: {e}",
+                            path.display(),
+                            lock.display()
+                        ),
+                    ))
+                }
+            }
+            let waited = start.elapsed();
+            if timeout.is_some_and(|t| waited >= t) {
+                return Err(Failure::plain(
+                    ExitCode::LOCKED,
+                    format!(
+                        "{} is being written by another process{}: its lock {} was still \
+                         held after {:.1} s; try again later or with a longer \
+                         --lock-timeout (a lock is held by a running process only, and \
+                         released when it ends)",
+                        path.display(),
+                        holder(&lock),
+                        lock.display(),
+                        waited.as_secs_f64()
+                    ),
+                ));
+            }
+            if !told {
+                eprintln!(
+                    "waiting for {} to be released: another process{} is writing {}",
+                    lock.display(),
+                    holder(&lock),
+                    path.display()
+                );
+                told = true;
+            }
+            let pause = Duration::from_millis(20);
+            let pause = timeout.map_or(pause, |t| pause.min(t.saturating_sub(waited)));
+            std::thread::sleep(pause);
+        }
+        // For messages only: who holds it. A failure here changes nothing.
+        let _ = file
+            .set_len(0)
+            .and_then(|()| (&file).write_all(format!("{}\n", std::process::id()).as_bytes()));
+        Ok(WriteLock { _file: file })
+    }
+}
+
+/// ` (pid N)` as written in a lock file, or nothing.
+fn holder(lock: &Path) -> String {
+    std::fs::read_to_string(lock)
+        .ok()
+        .and_then(|t| t.trim().parse::<u32>().ok())
+        .map(|pid| format!(" (pid {pid})"))
+        .unwrap_or_default()
 }

@@ -86,7 +86,10 @@ fn quantiles(mut v: Vec<f64>) -> String {
 }
 
 fn main() {
-    let args: Vec<u64> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
+    let args: Vec<u64> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
     let first = args.first().copied().unwrap_or(1);
     let count = args.get(1).copied().unwrap_or(100);
     if let Some(lib) = library(simulate::DEFAULT_SEED) {
@@ -116,7 +119,10 @@ fn main() {
         .map(|l| shape(&l))
         .collect();
     let n = shapes.len();
-    println!("Seeds {first} to {}: {n} studies of 3 x 4 demonstrations", first + count - 1);
+    println!(
+        "Seeds {first} to {}: {n} studies of 3 x 4 demonstrations",
+        first + count - 1
+    );
     println!("quantity: min / Q1 / median / Q3 / max  (bar of issue 7)");
     let col = |f: &dyn Fn(&Shape) -> f64| quantiles(shapes.iter().map(f).collect());
     println!("activities: {}  (>= 100)", col(&|s| s.activities as f64));

@@ -13,7 +13,7 @@ use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
-use crate::output::write_atomically;
+use crate::output::{remove_stale_temporaries, write_atomically, write_durably, WriteLock};
 
 /// Reads a library file: a missing file is a command line error (36), a damaged or newer
 /// one an input error (31) that names the line.
@@ -66,55 +66,106 @@ pub struct LearnArgs {
     pub lambda: Option<u32>,
     pub config: Option<PathBuf>,
     pub tree: Option<PathBuf>,
+    /// How long to wait for another writer's lock on the output (`None`: no limit).
+    pub lock_timeout: Option<std::time::Duration>,
 }
 
+/// The lambda of `--lambda` must be the library's.
+fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), Failure> {
+    match args.lambda.filter(|&l| l != library.lambda) {
+        Some(l) => Err(Failure::plain(
+            ExitCode::USAGE,
+            format!(
+                "--lambda {l} differs from the library's lambda {} ({}); costs of one \
+                 library use one lambda",
+                library.lambda,
+                path.display()
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// A recording given to `learn`: its content hash and, unless the library already had
+/// it when first read, its segments.
+struct Input<'a> {
+    path: &'a Path,
+    hash: String,
+    segmented: Option<demo_input::Segmented>,
+}
+
+/// Learning in two phases, so that concurrent learners of one library lose no counts and
+/// wait for each other only briefly: first the slow part, grounding and segmenting the
+/// recordings, without a lock; then, holding the output's [`WriteLock`], reading the
+/// library again, adding the recordings and writing it (durably, by a rename), so that
+/// the read and the write see no other writer in between (`docs/reliability.md`).
 pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
+    // A first look at the library: its lambda, and the recordings it already counts
+    // (not segmented again). It is read again under the lock.
+    let before = match &args.library {
+        Some(path) => {
+            let library = read_library(path)?;
+            check_lambda(&args, path, &library)?;
+            Some(library)
+        }
+        None => None,
+    };
+    let config = demo_input::config(args.config.as_deref())?;
+    let tree = demo_input::activity_tree(args.tree.as_deref())?;
+    let segment =
+        |path: &Path| demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {});
+    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(args.files.len());
+    for path in &args.files {
+        let hash = file_hash(path)?;
+        let known = before.as_ref().is_some_and(|l| l.has_recording(&hash))
+            || inputs.iter().any(|i| i.hash == hash);
+        let segmented = if known { None } else { Some(segment(path)?) };
+        inputs.push(Input {
+            path,
+            hash,
+            segmented,
+        });
+    }
+
+    drop(before);
+
+    let lock = WriteLock::acquire(&args.out, args.lock_timeout)?;
+    remove_stale_temporaries(&args.out);
     let mut library = match &args.library {
         Some(path) => {
             let library = read_library(path)?;
-            if let Some(l) = args.lambda.filter(|&l| l != library.lambda) {
-                return Err(Failure::plain(
-                    ExitCode::USAGE,
-                    format!(
-                        "--lambda {l} differs from the library's lambda {} ({}); costs of one \
-                         library use one lambda",
-                        library.lambda,
-                        path.display()
-                    ),
-                ));
-            }
+            check_lambda(&args, path, &library)?;
             library
         }
         None => Library::new(args.lambda.unwrap_or(learn::DEFAULT_LAMBDA)),
     };
-    let config = demo_input::config(args.config.as_deref())?;
-    let tree = demo_input::activity_tree(args.tree.as_deref())?;
     let mut log = String::new();
-    for path in &args.files {
-        let hash = file_hash(path)?;
-        if library.has_recording(&hash) {
-            let _ = writeln!(
-                log,
-                "{}: already in the library (same content), not counted again",
-                path.display()
-            );
-            continue;
-        }
-        let segmented = demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})?;
-        let info = RecordingInfo {
-            hash,
-            id: segmented.header.id.clone(),
-            participant: segmented.header.participant.clone(),
-            source: path.display().to_string(),
-            frames: segmented.frames,
-            segments: 0,
+    for input in inputs {
+        let path = input.path;
+        let counted = if library.has_recording(&input.hash) {
+            Added::AlreadyCounted
+        } else {
+            // Known at the first look, gone now (the library was replaced meanwhile).
+            let segmented = match input.segmented {
+                Some(s) => s,
+                None => segment(path)?,
+            };
+            let info = RecordingInfo {
+                hash: input.hash,
+                id: segmented.header.id.clone(),
+                participant: segmented.header.participant.clone(),
+                source: path.display().to_string(),
+                frames: segmented.frames,
+                segments: 0,
+            };
+            library.add_recording(
+                info,
+                &segmented.header,
+                &segmented.space,
+                &segmented.segments,
+            )
         };
-        match library.add_recording(
-            info,
-            &segmented.header,
-            &segmented.space,
-            &segmented.segments,
-        ) {
+        match counted {
             Added::Counted {
                 segments,
                 new_operators,
@@ -134,7 +185,8 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
             }
         }
     }
-    write_atomically(&args.out, &library.to_json())?;
+    write_durably(&args.out, &library.to_json())?;
+    drop(lock);
     print!("{log}");
     print!("{}", summary_table(&library));
     println!(

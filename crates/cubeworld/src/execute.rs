@@ -23,6 +23,12 @@ const SETTLE: f64 = 0.4;
 /// A step's effects must also hold this many frames before its last one (0.13 s, more
 /// than the grounding's minimum duration), so that they do not depend on what follows.
 const STABLE_FRAMES: u64 = 12;
+/// Cubes whose volumes overlap by more than this (m) along every axis have been moved
+/// into each other (the world has no collisions).
+const PENETRATION: f64 = 0.001;
+/// A held cube stopped by what is below it while the palm goes on this far (m) has had
+/// the palm go through it (placing lets the palm creep on by less).
+const SLIP: f64 = 0.03;
 
 /// A hand at the end of a step.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -85,6 +91,12 @@ pub struct StepReport {
     pub primitives: Vec<String>,
     /// Effects not given by the grounded state at the step's end; empty when it is ok.
     pub failed: Vec<FailedEffect>,
+    /// What the step's motion moved through each other: two cubes, `(cube_2 cube_3)`,
+    /// or a hand and the cube it holds, `(left_hand cube_2)`, when the cube was stopped
+    /// by what is below it and the palm went on more than 3 cm. The world has no
+    /// collisions, so a motion that gives the effects only this way is no execution of
+    /// the step; empty when it is ok.
+    pub collisions: Vec<String>,
     /// Preconditions that did not hold in the plan's symbolic state (a plan that is not
     /// valid in PDDL); the step is executed anyway.
     pub unmet_preconditions: Vec<String>,
@@ -97,9 +109,9 @@ pub struct StepReport {
 }
 
 impl StepReport {
-    /// Whether every effect held.
+    /// Whether every effect held and no cube was moved into another.
     pub fn ok(&self) -> bool {
-        self.failed.is_empty()
+        self.failed.is_empty() && self.collisions.is_empty()
     }
 
     /// `(take left_hand cube_2)`.
@@ -156,6 +168,9 @@ impl ExecutionReport {
 struct Sim {
     world: World,
     grounder: Grounder,
+    /// Pairs of entities moved through each other during the last `advance` (see
+    /// [`World::interpenetrating`]; not so at its start).
+    collisions: Vec<(usize, usize)>,
 }
 
 impl Sim {
@@ -173,6 +188,8 @@ impl Sim {
         let mut targets = Vec::with_capacity(scripts.len());
         let passive: Vec<bool> = (0..scripts.len()).map(|h| Some(h) != acting).collect();
         self.world.carried.iter_mut().for_each(|c| *c = V3::ZERO);
+        let overlapping = self.world.interpenetrating(PENETRATION, SLIP);
+        self.collisions.clear();
         for k in 1..=n {
             let s = k as f64 / FRAME_RATE;
             targets.clear();
@@ -181,6 +198,11 @@ impl Sim {
             self.grounder
                 .push(&frame, &mut |g| on_grounded(g.index, g.state));
             on_frame(&frame);
+            for pair in self.world.interpenetrating(PENETRATION, SLIP) {
+                if !overlapping.contains(&pair) && !self.collisions.contains(&pair) {
+                    self.collisions.push(pair);
+                }
+            }
         }
         self.world.frames.saturating_sub(1)
     }
@@ -283,7 +305,11 @@ pub fn execute(
             .collect()
     };
 
-    let mut sim = Sim { world, grounder };
+    let mut sim = Sim {
+        world,
+        grounder,
+        collisions: Vec::new(),
+    };
     let mut frames: Vec<Frame> = Vec::new();
     let mut grounded: Vec<State> = Vec::new();
     let mut keep = |i: u64, s: &State| {
@@ -370,18 +396,17 @@ pub fn execute(
             &after_facts,
             &cube_args,
         );
-        // Try every candidate on a copy; keep the first that gives the effects, else the
-        // one that fails fewest.
-        let mut best: Option<((usize, usize, usize), Script)> = None;
+        // Try every candidate on a copy; keep the first that gives the effects without
+        // moving a cube into another, else the one that does not collide and fails
+        // fewest.
+        let mut best: Option<((usize, usize, usize, usize), Script)> = None;
         for (k, cand) in candidates(&sim.world, &intent).into_iter().enumerate() {
             let score = trial(&sim, hand, &cand, &checks);
-            if best
-                .as_ref()
-                .is_none_or(|(b, _)| (score.0, score.1, k) < *b)
-            {
-                best = Some(((score.0, score.1, k), cand));
+            let key = (score.0, score.1, score.2, k);
+            if best.as_ref().is_none_or(|(b, _)| key < *b) {
+                best = Some((key, cand));
             }
-            if score == (0, 0) {
+            if score == (0, 0, 0) {
                 break;
             }
         }
@@ -421,6 +446,19 @@ pub fn execute(
             gripper: script.gripper.to_string(),
             primitives: script.primitives.iter().map(|p| p.to_string()).collect(),
             failed: Vec::new(),
+            collisions: sim
+                .collisions
+                .iter()
+                .map(|&(a, b)| {
+                    let name = |e: usize| {
+                        header
+                            .entities
+                            .get(e)
+                            .map_or_else(String::new, |e| e.name.clone())
+                    };
+                    format!("({} {})", name(a), name(b))
+                })
+                .collect(),
             unmet_preconditions: unmet,
             grounded: Vec::new(),
             hands: hand_poses(&sim.world),
@@ -501,9 +539,10 @@ pub fn execute(
     })
 }
 
-/// Runs a candidate on a copy of the world: (effects failed at the end or 0.13 s before,
-/// disagreements with the symbolic state after the step).
-fn trial(sim: &Sim, hand: usize, script: &Script, checks: &Checks) -> (usize, usize) {
+/// Runs a candidate on a copy of the world: (pairs of cubes it moves into each other,
+/// effects failed at the end or 0.13 s before, disagreements with the symbolic state
+/// after the step).
+fn trial(sim: &Sim, hand: usize, script: &Script, checks: &Checks) -> (usize, usize, usize) {
     let mut copy = sim.clone();
     let scripts: Vec<Script> = (0..copy.world.hands.len())
         .map(|h| {
@@ -534,9 +573,10 @@ fn trial(sim: &Sim, hand: usize, script: &Script, checks: &Checks) -> (usize, us
     );
     copy.grounder.finish(&mut |g| grab(g.index, g.state));
     let (Some(e), Some(a)) = (at_end, at_early) else {
-        return (usize::MAX, usize::MAX);
+        return (usize::MAX, usize::MAX, usize::MAX);
     };
     (
+        copy.collisions.len(),
         checks.failed(&e).len() + checks.failed(&a).len(),
         checks.disagreements(&e),
     )

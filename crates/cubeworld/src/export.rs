@@ -39,6 +39,7 @@ pub fn export(report: &ExecutionReport) -> Value {
                 "primitives": s.primitives,
                 "ok": s.ok(),
                 "failed": s.failed,
+                "collisions": s.collisions,
                 "hands": s.hands,
                 "cubes": s.cubes,
             })

@@ -274,6 +274,41 @@ impl World {
         out
     }
 
+    /// Pairs of entities (header indices, lower first) that have gone through each
+    /// other: cubes whose volumes overlap by more than `tolerance` (m) along every axis,
+    /// and a hand with the cube it holds when the cube, stopped by what is below it,
+    /// is more than `slip` (m) from where the grasp holds it. The world has no
+    /// collisions, so a motion can do either; [`crate::execute`] avoids motions that do.
+    pub fn interpenetrating(&self, tolerance: f64, slip: f64) -> Vec<(usize, usize)> {
+        let limit = CUBE_SIZE - tolerance;
+        let nh = self.hands.len();
+        let mut out = Vec::new();
+        for (h, hand) in self.hands.iter().enumerate() {
+            let Some(c) = hand.holding else {
+                continue;
+            };
+            if let Some(Cube {
+                pos,
+                held: Some((_, offset)),
+                ..
+            }) = self.cubes.get(c)
+            {
+                if (*pos - (hand.pos + *offset)).norm() > slip {
+                    out.push((h, nh + c));
+                }
+            }
+        }
+        for (i, a) in self.cubes.iter().enumerate() {
+            for (j, b) in self.cubes.iter().enumerate().skip(i + 1) {
+                let d = a.pos - b.pos;
+                if d.x.abs() < limit && d.y.abs() < limit && d.z.abs() < limit {
+                    out.push((nh + i, nh + j));
+                }
+            }
+        }
+        out
+    }
+
     /// The top of everything standing (m): what a carried cube must clear.
     pub fn highest_top(&self, except: Option<usize>) -> f64 {
         let riding = except.map(|e| self.riders(e)).unwrap_or_default();

@@ -61,15 +61,25 @@ pub fn run(args: ExecuteArgs) -> Result<ExitCode, Failure> {
                     }
                 })
                 .collect();
-            out.push_str(&format!(
-                "{head}: FAILED: expected {}, grounded state has {}\n",
-                expected.join(" "),
-                if s.grounded.is_empty() {
-                    "nothing over its objects".to_string()
-                } else {
-                    s.grounded.join(" ")
-                }
-            ));
+            let mut why = Vec::new();
+            if !expected.is_empty() {
+                why.push(format!(
+                    "expected {}, grounded state has {}",
+                    expected.join(" "),
+                    if s.grounded.is_empty() {
+                        "nothing over its objects".to_string()
+                    } else {
+                        s.grounded.join(" ")
+                    }
+                ));
+            }
+            if !s.collisions.is_empty() {
+                why.push(format!(
+                    "its motion moves things through each other: {}",
+                    s.collisions.join(" ")
+                ));
+            }
+            out.push_str(&format!("{head}: FAILED: {}\n", why.join("; ")));
         }
     }
     if let Some(i) = report.first_failure() {

@@ -337,7 +337,8 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
 
     // Results.
     let complete = chosen.len() == all_levels.len();
-    let notes = findings(&cells, &domains, &problems, args.time_limit, complete);
+    let mut notes = findings(&cells, &domains, &problems, args.time_limit, complete);
+    notes.extend(grid_facts(&cells, &domains, &problems));
     let tables = tables_markdown(
         &cells,
         &domains,
@@ -496,6 +497,25 @@ fn findings(
                 "; a lower bound, since the larger domain hit the time limit"
             }
         ));
+        if ratio < 2.0 && big.prio != slim.prio {
+            let cost = |c: &Cell| {
+                c.median()
+                    .and_then(|r| r.cost)
+                    .map_or("-".to_string(), |x| x.to_string())
+            };
+            notes.push(format!(
+                "{planner}: the grid does not show the paper's effect for goal {goal}. The \
+                 smallest domain that plans already holds {} of the {} operators (lower \
+                 levels cannot build the tower), so the larger domain adds comparatively few \
+                 ground actions (below), and its extra operators also allow cheaper plans \
+                 (cost {} against {}), which the optimal search must prove optimal in either \
+                 domain.",
+                slim.operators,
+                big.operators,
+                cost(big),
+                cost(slim)
+            ));
+        }
     }
     if let Some(first) = domains.first() {
         let unsolved: Vec<usize> = problems
@@ -516,6 +536,61 @@ fn findings(
                 first.0, first.1, unsolved
             ));
         }
+    }
+    notes
+}
+
+/// What explains the grid: how many ground actions each domain gives the largest goal
+/// (the search's branching), and how many plans failed the execution check and why.
+fn grid_facts(
+    cells: &[Cell],
+    domains: &[(usize, usize, pddl::Domain)],
+    problems: &[(usize, Vec<String>, pddl::Problem)],
+) -> Vec<String> {
+    let mut notes = Vec::new();
+    if let Some((goal, _, problem)) = problems.iter().max_by_key(|p| p.0) {
+        let sizes: Vec<String> = domains
+            .iter()
+            .map(
+                |(prio, operators, domain)| match slim::translate_checked(domain, problem) {
+                    slim::Translated::Task(task, _) => format!(
+                        "priority {prio} ({operators} operators): {}",
+                        task.operators.len()
+                    ),
+                    slim::Translated::Done(_) => {
+                        format!("priority {prio} ({operators} operators): none (unreachable)")
+                    }
+                },
+            )
+            .collect();
+        notes.push(format!(
+            "Ground actions after translation for goal {goal}: {}.",
+            sizes.join("; ")
+        ));
+    }
+    let solved = cells
+        .iter()
+        .filter(|c| c.outcome() == Outcome::Solved)
+        .count();
+    let failed: Vec<String> = cells
+        .iter()
+        .filter(|c| c.executed == Some(false))
+        .map(|c| format!("{} priority {} goal {}", c.planner, c.prio, c.goal))
+        .collect();
+    if failed.is_empty() {
+        notes.push(format!(
+            "All {solved} plans found executed successfully in the cube world."
+        ));
+    } else {
+        notes.push(format!(
+            "{} of {solved} plans failed the execution check ({}): they are valid in PDDL but \
+             use learned operators together in ways no demonstration did (e.g. stacking a \
+             cube onto a cube that already carries another, since no learned operator \
+             deletes the old onTop or asks for a clear cube); the geometry cannot give their \
+             effects. `demoplan execute` on their plan files shows the failing step.",
+            failed.len(),
+            failed.join(", ")
+        ));
     }
     notes
 }

@@ -178,14 +178,8 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             plan_file,
             keep_without_effects,
         } => {
-            let time_limit = match time_limit.as_deref().map(commands::plan::parse_time_limit) {
-                Some(Ok(limit)) => limit,
-                Some(Err(e)) => {
-                    return Err(Failure::plain(
-                        ExitCode::USAGE,
-                        format!("--time-limit: {e}"),
-                    ))
-                }
+            let time_limit = match time_limit {
+                Some(text) => time_limit_option(&text)?,
                 None => None,
             };
             commands::solve::run(commands::solve::SolveArgs {
@@ -211,16 +205,9 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             seed,
             hands,
         } => {
-            let time_limit = match commands::plan::parse_time_limit(&time_limit) {
-                Ok(Some(limit)) => limit,
-                Ok(None) => std::time::Duration::from_secs(u64::from(u32::MAX)),
-                Err(e) => {
-                    return Err(Failure::plain(
-                        ExitCode::USAGE,
-                        format!("--time-limit: {e}"),
-                    ))
-                }
-            };
+            // `infinity`: no limit worth the name.
+            let time_limit = time_limit_option(&time_limit)?
+                .unwrap_or(std::time::Duration::from_secs(u64::from(u32::MAX)));
             commands::reproduce::run(commands::reproduce::ReproduceArgs {
                 out,
                 time_limit,
@@ -266,4 +253,11 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             frames,
         }),
     }
+}
+
+/// A `--time-limit` value with Fast Downward's units (`None`: `infinity`); a bad one is a
+/// command line error.
+fn time_limit_option(text: &str) -> Result<Option<std::time::Duration>, Failure> {
+    commands::plan::parse_time_limit(text)
+        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))
 }

@@ -64,15 +64,7 @@ impl FastDownward {
         time_limit: Option<Duration>,
     ) -> PlanRun {
         let start = Instant::now();
-        let mut run = PlanRun {
-            outcome: Outcome::Error(String::new()),
-            plan: Vec::new(),
-            cost: None,
-            expansions: None,
-            translate_time: Duration::ZERO,
-            search_time: Duration::ZERO,
-            total_time: Duration::ZERO,
-        };
+        let mut run = PlanRun::ended(Outcome::Error(String::new()));
         let dir = std::env::temp_dir().join(format!(
             "demoplan-fd-{}-{}",
             std::process::id(),

@@ -54,7 +54,9 @@ pub struct PlanRun {
 }
 
 impl PlanRun {
-    fn ended(outcome: Outcome) -> PlanRun {
+    /// A run that ended with `outcome` before producing anything: no plan, no counts,
+    /// zero times (callers fill in what they measured).
+    pub fn ended(outcome: Outcome) -> PlanRun {
         PlanRun {
             outcome,
             plan: Vec::new(),

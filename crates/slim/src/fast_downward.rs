@@ -85,8 +85,14 @@ impl FastDownward {
                         log.lines().rev().take(3).collect::<Vec<_>>().join(" / ")
                     )),
                 };
+                // The search component's "Total time" includes building the heuristic
+                // (iPDB's hill climbing), which its "Search time" leaves out; demoplan's
+                // search time includes it, so that is the one to compare.
+                let mut search_total = None;
                 for line in log.lines() {
-                    if let Some(rest) = line.split("Search time: ").nth(1) {
+                    if let Some(rest) = line.split("Total time: ").nth(1) {
+                        search_total = Some(seconds(rest));
+                    } else if let Some(rest) = line.split("Search time: ").nth(1) {
                         run.search_time = seconds(rest);
                     } else if let Some(rest) = line.split("Done! [").nth(1) {
                         // The translator's last line: "Done! [0.1s CPU, 0.1s wall-clock]".
@@ -101,6 +107,9 @@ impl FastDownward {
                     } else if let Some(rest) = line.split("Plan cost: ").nth(1) {
                         run.cost = rest.trim().parse().ok();
                     }
+                }
+                if let Some(total) = search_total {
+                    run.search_time = total;
                 }
                 if run.outcome == Outcome::Solved {
                     run.plan = plan

@@ -611,11 +611,13 @@ fn tables_markdown(
          rejected by relaxed reachability before search.\n",
         limit.as_secs()
     );
-    for (k, (planner, _)) in planners.iter().enumerate() {
+    for (planner, _) in planners {
         let title = match planner.as_str() {
             "ipdb" => "Table 3: A* with iPDB (demoplan)".to_string(),
             "lmcut" => "Table 4: A* with LM-cut (demoplan)".to_string(),
-            other => format!("Table {}: {other}", 5 + k),
+            "fd-ipdb" => "Fast Downward astar(ipdb()), beside Table 3".to_string(),
+            "fd-lmcut" => "Fast Downward astar(lmcut()), beside Table 4".to_string(),
+            other => other.to_string(),
         };
         let _ = writeln!(s, "## {title}\n");
         let mut header = String::from("| domain | operators |");

@@ -175,6 +175,45 @@ fn relink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
 
 /// Lowers the h^max of the effects to `value` where that is cheaper, queueing them.
 #[inline]
+/// Recomputes an operator whose supporter got cheaper (or that got cheaper itself): its
+/// value is its cost plus its most expensive precondition; its supporter stays the one it
+/// had when this round's update began while that is of highest cost, otherwise becomes
+/// the first precondition of highest cost (so the result depends only on the updated
+/// costs, not on the order of the update). Relaxes its effects.
+fn update_operator(
+    ops: &mut [RelaxedOp],
+    facts: &mut [RelaxedFact],
+    pre: &[u32],
+    eff: &[u32],
+    heap: &mut RadixHeap,
+    round: u32,
+    o: u32,
+) {
+    let op = &mut ops[o as usize];
+    if op.updated_in_round != round {
+        op.updated_in_round = round;
+        op.round_supporter = op.supporter;
+    }
+    let op = *op;
+    let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
+    let Some(max) = pres.iter().map(|&p| facts[p as usize].cost).max() else {
+        return;
+    };
+    let previous = op.round_supporter;
+    let supporter = if facts[previous as usize].cost == max {
+        previous
+    } else {
+        first_with_cost(pres, facts, max).unwrap_or(previous)
+    };
+    relink(ops, facts, o, supporter);
+    relax_effects(
+        &eff[op.eff_start as usize..op.eff_end as usize],
+        op.cost.saturating_add(max),
+        facts,
+        heap,
+    );
+}
+
 fn relax_effects(effects: &[u32], value: u64, facts: &mut [RelaxedFact], heap: &mut RadixHeap) {
     for &e in effects {
         let fact = &mut facts[e as usize];
@@ -343,15 +382,13 @@ impl LmCut {
             ..
         } = self;
         heap.clear();
+        // The cut's operators got cheaper. Each is valued by the most expensive of its
+        // preconditions now, not by its supporter alone: relaxing an earlier cut
+        // operator's effects can already have lowered this one's supporter below its other
+        // preconditions (valuing it by the supporter then undercounts h^max, and h with
+        // it).
         for &o in cut.iter() {
-            let op = &ops[o as usize];
-            let value = op.cost + facts[op.supporter as usize].cost;
-            relax_effects(
-                &eff[op.eff_start as usize..op.eff_end as usize],
-                value,
-                facts,
-                heap,
-            );
+            update_operator(ops, facts, pre, eff, heap, round, o);
         }
         while let Some((c, f)) = heap.pop() {
             if c > facts[f as usize].cost {
@@ -362,31 +399,7 @@ impl LmCut {
             while next != NONE {
                 let o = next;
                 next = ops[o as usize].supported_next;
-                let op = &mut ops[o as usize];
-                if op.updated_in_round != round {
-                    op.updated_in_round = round;
-                    op.round_supporter = op.supporter;
-                }
-                let op = *op;
-                let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
-                let max = pres
-                    .iter()
-                    .map(|&p| facts[p as usize].cost)
-                    .max()
-                    .unwrap_or(c);
-                let previous = op.round_supporter;
-                let supporter = if facts[previous as usize].cost == max {
-                    previous
-                } else {
-                    first_with_cost(pres, facts, max).unwrap_or(previous)
-                };
-                relink(ops, facts, o, supporter);
-                relax_effects(
-                    &eff[op.eff_start as usize..op.eff_end as usize],
-                    op.cost + max,
-                    facts,
-                    heap,
-                );
+                update_operator(ops, facts, pre, eff, heap, round, o);
             }
         }
     }

@@ -8,7 +8,7 @@
 //! Defaults: seeds 1 to 100. Also measures seed 7, the embedded default.
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Library, RecordingInfo, TYPE_ORDER};
+use learn::{levels, DomainOptions, Library, TYPE_ORDER};
 use segment::ActivityTree;
 
 /// What one study's library looks like.
@@ -27,22 +27,8 @@ fn library(seed: u64) -> Option<Library> {
     let tree = ActivityTree::table_one();
     let mut library = Library::default();
     for demo in &study.demonstrations {
-        let header = demo.header().clone();
-        let frames = demo.frames().map(|(f, _)| f);
-        let segmented = learn::segment_frames(&header, frames, &config, &tree);
-        library.add_recording(
-            RecordingInfo {
-                hash: format!("{seed}-{}", header.id),
-                id: header.id.clone(),
-                participant: header.participant.clone(),
-                source: String::new(),
-                frames: segmented.frames,
-                segments: 0,
-            },
-            &header,
-            &segmented.space,
-            &segmented.segments,
-        );
+        let frames = demo.frames().map(|(f, _)| f).collect();
+        learn::add_frames(&mut library, demo.header(), frames, &config, &tree, "");
     }
     Some(library)
 }

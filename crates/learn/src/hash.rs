@@ -35,6 +35,18 @@ impl StableHasher {
     }
 }
 
+/// Hashing what a writer would write, without keeping the bytes.
+impl std::io::Write for StableHasher {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        StableHasher::write(self, buf);
+        Ok(buf.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
 impl Default for StableHasher {
     fn default() -> StableHasher {
         StableHasher::new()

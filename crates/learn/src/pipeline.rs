@@ -5,6 +5,9 @@ use grounding::{FactSpace, Grounder, GroundingConfig};
 use recording::{Frame, Header};
 use segment::{ActivityTree, Segment, Segmenter};
 
+use crate::hash::StableHasher;
+use crate::library::{Added, Library, RecordingInfo};
+
 /// A recording's fact space and segments.
 #[derive(Debug, Clone)]
 pub struct Segmented {
@@ -63,4 +66,46 @@ pub fn activities(segments: &[Segment]) -> Vec<Segment> {
         }
     }
     out
+}
+
+/// The content hash (16 hex digits) of a recording with these frames as demoplan's
+/// writer writes it: the hash `demoplan learn` gives the file.
+pub fn recording_hash(header: &Header, frames: &[Frame]) -> String {
+    let mut hasher = StableHasher::new();
+    if let Ok(mut writer) = recording::Writer::new(&mut hasher, header) {
+        for f in frames {
+            if writer.write_frame(f).is_err() {
+                break;
+            }
+        }
+        let _ = writer.finish();
+    }
+    format!("{:016x}", hasher.finish())
+}
+
+/// Grounds, segments and learns a recording held in memory (a simulated demonstration),
+/// as `demoplan learn` does a file; `source` says where it came from.
+pub fn add_frames(
+    library: &mut Library,
+    header: &Header,
+    frames: Vec<Frame>,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+    source: &str,
+) -> Added {
+    let hash = recording_hash(header, &frames);
+    let segmented = segment_frames(header, frames, config, tree);
+    library.add_recording(
+        RecordingInfo {
+            hash,
+            id: header.id.clone(),
+            participant: header.participant.clone(),
+            source: source.to_string(),
+            frames: segmented.frames,
+            segments: 0,
+        },
+        header,
+        &segmented.space,
+        &segmented.segments,
+    )
 }

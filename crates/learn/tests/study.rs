@@ -6,7 +6,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Library, RecordingInfo, StableHasher, TYPE_ORDER};
+use learn::{levels, DomainOptions, Library, RecordingInfo, TYPE_ORDER};
 use segment::ActivityTree;
 
 /// A simulated demonstration ready to learn from: what `demoplan learn` gets from a
@@ -20,13 +20,7 @@ struct Learnable {
 fn learnable(demo: &simulate::Demonstration) -> Learnable {
     let header = demo.header().clone();
     let frames: Vec<recording::Frame> = demo.frames().map(|(f, _)| f).collect();
-    let mut writer = recording::Writer::new(Vec::new(), &header).unwrap();
-    for f in &frames {
-        writer.write_frame(f).unwrap();
-    }
-    let bytes = writer.finish().unwrap();
-    let mut hasher = StableHasher::new();
-    hasher.write(&bytes);
+    let hash = learn::recording_hash(&header, &frames);
     let segmented = learn::segment_frames(
         &header,
         frames,
@@ -35,7 +29,7 @@ fn learnable(demo: &simulate::Demonstration) -> Learnable {
     );
     Learnable {
         info: RecordingInfo {
-            hash: format!("{:016x}", hasher.finish()),
+            hash,
             id: header.id.clone(),
             participant: header.participant.clone(),
             source: String::new(),

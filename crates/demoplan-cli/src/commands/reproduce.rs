@@ -10,8 +10,7 @@ use std::time::{Duration, Instant};
 
 use grounding::GroundingConfig;
 use learn::{
-    domain, levels, paper_goal_tower, per_type, problem, tower_goal, DomainOptions, Library,
-    RecordingInfo, Scene, StableHasher,
+    domain, levels, paper_goal_tower, per_type, problem, tower_goal, DomainOptions, Library, Scene,
 };
 use segment::ActivityTree;
 use slim::{Backend, FastDownward, Outcome, PlanRun};
@@ -66,33 +65,10 @@ fn learn_study(study: &simulate::Study) -> Library {
     let config = GroundingConfig::default();
     let tree = ActivityTree::table_one();
     let mut library = Library::default();
+    let source = format!("simulated, seed {}", study.seed);
     for demo in &study.demonstrations {
-        let header = demo.header().clone();
-        let frames: Vec<recording::Frame> = demo.frames().map(|(f, _)| f).collect();
-        // The content hash of the recording as `demoplan simulate` would write it.
-        let mut hasher = StableHasher::new();
-        if let Ok(mut writer) = recording::Writer::new(Vec::new(), &header) {
-            for f in &frames {
-                let _ = writer.write_frame(f);
-            }
-            if let Ok(bytes) = writer.finish() {
-                hasher.write(&bytes);
-            }
-        }
-        let segmented = learn::segment_frames(&header, frames, &config, &tree);
-        library.add_recording(
-            RecordingInfo {
-                hash: format!("{:016x}", hasher.finish()),
-                id: header.id.clone(),
-                participant: header.participant.clone(),
-                source: format!("simulated, seed {}", study.seed),
-                frames: segmented.frames,
-                segments: 0,
-            },
-            &header,
-            &segmented.space,
-            &segmented.segments,
-        );
+        let frames = demo.frames().map(|(f, _)| f).collect();
+        learn::add_frames(&mut library, demo.header(), frames, &config, &tree, &source);
     }
     library
 }

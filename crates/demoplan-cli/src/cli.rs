@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use clap::{Parser, Subcommand};
+use clap::{Parser, Subcommand, ValueEnum};
 
 /// demoplan: planning domains from human demonstrations, and a fast optimal planner.
 #[derive(Debug, Parser)]
@@ -205,8 +205,8 @@ pub enum Command {
     },
     /// Learn planning operators from recordings into a library (JSON).
     ///
-    /// Each activity (a run of one hand's segments with one class) becomes a lifted
-    /// operator; equal operators are merged and counted, and each gets the cost
+    /// Each activity (a run of one hand's segments with one class, and the Idle that
+    /// settles it: see `--activities`) becomes a lifted operator; equal operators are merged and counted, and each gets the cost
     /// ceil(lambda * (1 - count / type count)). With `--library`, the recordings are added
     /// to an existing library; a recording already in it (same content) is not counted
     /// again. Prints per type the operators with count and cost. The library is written
@@ -225,6 +225,13 @@ pub enum Command {
         /// The largest cost, for a new library (default 100, the paper's).
         #[arg(long, value_name = "N")]
         lambda: Option<u32>,
+        /// How a hand's segments become activities, for a new library (default
+        /// `settled`): `settled` ends an activity where the Idle right after it ends (the
+        /// hand coming to rest at the cube it reached, the stacked cube landing as the
+        /// hand opens); `runs` keeps that Idle an activity of its own. See
+        /// docs/operators.md.
+        #[arg(long, value_name = "KIND", value_enum)]
+        activities: Option<ActivitiesArg>,
         /// Grounding thresholds as TOML.
         #[arg(long, value_name = "FILE")]
         config: Option<PathBuf>,
@@ -412,4 +419,23 @@ pub enum Command {
         #[arg(long, value_name = "FILE.jsonl")]
         frames: Option<PathBuf>,
     },
+}
+
+/// `learn --activities`: how segments become activities ([`learn::Grouping`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ActivitiesArg {
+    /// An activity ends where the Idle right after it ends.
+    Settled,
+    /// Runs of one class; the Idle after an activity is an activity of its own.
+    Runs,
+}
+
+impl ActivitiesArg {
+    /// The grouping it names.
+    pub fn grouping(self) -> learn::Grouping {
+        match self {
+            ActivitiesArg::Settled => learn::Grouping::Settled,
+            ActivitiesArg::Runs => learn::Grouping::Runs,
+        }
+    }
 }

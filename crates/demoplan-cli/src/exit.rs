@@ -34,4 +34,9 @@ impl ExitCode {
     /// file to write for longer than the wait allowed. A temporary failure, worth trying
     /// again: the code is `EX_TEMPFAIL` of BSD's sysexits.h.
     pub const LOCKED: ExitCode = ExitCode(75);
+    /// Not Fast Downward's: the reader of standard output closed it early (`demoplan
+    /// operators LIB | head`). 141 is what a shell reports for a program killed by
+    /// SIGPIPE (128 + 13), as C programs like Fast Downward are; demoplan stops quietly
+    /// with the same code.
+    pub const OUTPUT_CLOSED: ExitCode = ExitCode(141);
 }

@@ -21,6 +21,7 @@ use diagnostic::Failure;
 use exit::ExitCode;
 
 fn main() {
+    stop_cleanly_when_stdout_fails();
     let code = match cli::Cli::try_parse() {
         Ok(cli) => match run(cli) {
             Ok(code) => code,
@@ -42,6 +43,26 @@ fn main() {
         }
     };
     std::process::exit(code.0);
+}
+
+/// Rust ignores SIGPIPE, so printing to a closed pipe or a full disk panics inside
+/// `println!`. A reader that stops early (`| head`) is no error: exit quietly with the
+/// code a shell shows for SIGPIPE. Any other failure to write standard output is an I/O
+/// error (35) with a message, not a panic report.
+fn stop_cleanly_when_stdout_fails() {
+    let default_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let text = info.to_string();
+        if let Some(at) = text.find("failed printing to stdout: ") {
+            if text.contains("Broken pipe") {
+                std::process::exit(ExitCode::OUTPUT_CLOSED.0);
+            }
+            let cause = &text[at + "failed printing to stdout: ".len()..];
+            eprintln!("error: cannot write to standard output: {}", cause.trim());
+            std::process::exit(ExitCode::CRITICAL_ERROR.0);
+        }
+        default_hook(info);
+    }));
 }
 
 fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
@@ -135,6 +156,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             library,
             out,
             lambda,
+            activities,
             config,
             tree,
             lock_timeout,
@@ -146,6 +168,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
                     library,
                     out,
                     lambda,
+                    grouping: activities.map(cli::ActivitiesArg::grouping),
                     config,
                     tree,
                     lock_timeout,

@@ -1353,7 +1353,8 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .output()
         .unwrap();
     assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
-    // Algorithm 1: priority 1 is rejected before search, a later level plans.
+    // Algorithm 1 on the default (settled) activities: the paper's finding, the five
+    // most frequent operators plan.
     let plan = tmp.join("plan");
     let solve = demoplan()
         .arg("solve")
@@ -1365,8 +1366,60 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .unwrap();
     let log = String::from_utf8_lossy(&solve.stdout).into_owned();
     assert_eq!(solve.status.code(), Some(0), "{}", transcript(&solve));
-    assert!(log.contains("relaxed-unreachable"), "{log}");
-    assert!(log.contains("Solution found at priority"), "{log}");
+    assert!(log.contains("Solution found at priority 1 "), "{log}");
+    // With every Idle an activity of its own (`--activities runs`), the most frequent
+    // operators cannot reach the tower: priority 1 is rejected before search and the
+    // loop widens.
+    let runs = tmp.join("runs.json");
+    let recordings: Vec<String> =
+        serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&library).unwrap())
+            .unwrap()["recordings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["source"].as_str().unwrap().to_string())
+            .collect();
+    let learn_runs = demoplan()
+        .arg("learn")
+        .args(&recordings)
+        .args(["--activities", "runs", "-o"])
+        .arg(&runs)
+        .output()
+        .unwrap();
+    assert_eq!(
+        learn_runs.status.code(),
+        Some(0),
+        "{}",
+        transcript(&learn_runs)
+    );
+    let widened = demoplan()
+        .arg("solve")
+        .arg(&runs)
+        .arg(&problem)
+        .args(["--time-limit", "60", "--plan-file"])
+        .arg(tmp.join("runs.plan"))
+        .output()
+        .unwrap();
+    let widened_log = String::from_utf8_lossy(&widened.stdout).into_owned();
+    assert_eq!(widened.status.code(), Some(0), "{}", transcript(&widened));
+    assert!(widened_log.contains("relaxed-unreachable"), "{widened_log}");
+    assert!(
+        !widened_log.contains("Solution found at priority 1 "),
+        "{widened_log}"
+    );
+    // One library counts one kind of activity.
+    let mixed = demoplan()
+        .arg("learn")
+        .arg(&recordings[0])
+        .arg("--library")
+        .arg(&runs)
+        .args(["--activities", "settled", "-o"])
+        .arg(tmp.join("mixed.json"))
+        .output()
+        .unwrap();
+    assert_eq!(mixed.status.code(), Some(36), "{}", transcript(&mixed));
+    assert!(String::from_utf8_lossy(&mixed.stderr).contains("`runs` activities"));
+    assert!(!tmp.join("mixed.json").exists());
     // The plan validates on the domain it was found in and executes in the cube world.
     let level: String = log
         .lines()
@@ -1439,7 +1492,7 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
         .arg("reproduce")
         .arg("-o")
         .arg(&out)
-        .args(["--prios", "2,4", "--goals", "1,2,3", "--time-limit", "5"])
+        .args(["--prios", "1,3", "--goals", "1,2,3", "--time-limit", "5"])
         .output()
         .unwrap();
     let log = String::from_utf8_lossy(&run.stdout).into_owned();
@@ -1449,7 +1502,7 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
     // The library reads back; domains and problems parse and fit each other.
     let library = read("library.json");
     assert!(library.starts_with("{\n  \"format\": \"demoplan-library\""));
-    for prio in [2, 4] {
+    for prio in [1, 3] {
         let domain = pddl::parse_domain(&read(&format!("domains/prio-{prio}.pddl"))).unwrap();
         for goal in 1..=3 {
             let problem =
@@ -1563,4 +1616,40 @@ fn fast_downward_backends_say_clearly_when_it_is_missing() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("is not a file"));
     // Nothing was written before the check.
     assert!(!tmp.join("out").exists());
+}
+
+#[test]
+fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
+    // `demoplan fmt --stdout FILE` prints the formatted PDDL: thousands of lines for a
+    // large problem.
+    let problem = benchmark("visitall-opt11-strips", "problem11-full").problem_file;
+    let mut child = demoplan()
+        .args(["fmt", "--stdout"])
+        .arg(&problem)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The reader goes away before reading anything (`| head -0`).
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(141), "{}", transcript(&out));
+    assert!(out.stderr.is_empty(), "{}", transcript(&out));
+
+    let full = std::path::Path::new("/dev/full");
+    if full.exists() {
+        let out = demoplan()
+            .args(["fmt", "--stdout"])
+            .arg(&problem)
+            .stdout(std::fs::File::create(full).unwrap())
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(35), "{}", transcript(&out));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains("cannot write to standard output"),
+            "{stderr}"
+        );
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
 }

@@ -37,4 +37,4 @@ pub use library::{
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION, TYPE_ORDER,
 };
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
-pub use pipeline::{activities, add_frames, recording_hash, segment_frames, Segmented};
+pub use pipeline::{activities, add_frames, recording_hash, segment_frames, Grouping, Segmented};

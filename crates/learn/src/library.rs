@@ -10,7 +10,7 @@ use segment::{Activity, Segment};
 use serde::{Deserialize, Serialize};
 
 use crate::operator::{fact_text, lift, LiftedFact, Operator, ParamType};
-use crate::pipeline::activities;
+use crate::pipeline::{activities, Grouping};
 
 /// The format name written into every library file.
 pub const FORMAT_NAME: &str = "demoplan-library";
@@ -85,6 +85,8 @@ pub struct Entry {
 pub struct Library {
     /// The largest cost (`lambda` of the cost formula).
     pub lambda: u32,
+    /// How segments become activities; one library counts with one grouping.
+    pub grouping: Grouping,
     recordings: BTreeMap<String, RecordingInfo>,
     operators: BTreeMap<Operator, Entry>,
 }
@@ -159,10 +161,16 @@ impl Default for Library {
 }
 
 impl Library {
-    /// An empty library.
+    /// An empty library with the default grouping ([`Grouping::Settled`]).
     pub fn new(lambda: u32) -> Library {
+        Library::with_grouping(lambda, Grouping::default())
+    }
+
+    /// An empty library that groups segments into activities as `grouping` says.
+    pub fn with_grouping(lambda: u32, grouping: Grouping) -> Library {
         Library {
             lambda,
+            grouping,
             recordings: BTreeMap::new(),
             operators: BTreeMap::new(),
         }
@@ -182,7 +190,7 @@ impl Library {
             return Added::AlreadyCounted;
         }
         let mut new_operators = 0;
-        let activities = activities(segments);
+        let activities = activities(segments, self.grouping);
         for s in &activities {
             let operator = lift(s, space, header);
             let provenance = Provenance {
@@ -224,8 +232,21 @@ impl Library {
     }
 
     /// Adds every recording and count of another library (recordings this one has are
-    /// skipped).
-    pub fn merge(&mut self, other: &Library) {
+    /// skipped). Libraries that group segments differently count different things and
+    /// are not merged.
+    pub fn merge(&mut self, other: &Library) -> Result<(), LibraryError> {
+        if other.grouping != self.grouping {
+            return Err(LibraryError {
+                line: 0,
+                column: 0,
+                field: "activities".to_string(),
+                message: format!(
+                    "cannot merge a library of `{}` activities into one of `{}` activities",
+                    other.grouping.name(),
+                    self.grouping.name()
+                ),
+            });
+        }
         let fresh: Vec<&String> = other
             .recordings
             .keys()
@@ -258,6 +279,7 @@ impl Library {
             entry.provenance.extend(mine);
             sort_provenance(&mut entry.provenance);
         }
+        Ok(())
     }
 
     /// Adds `count` occurrences of an operator without provenance (for tests of what
@@ -350,6 +372,7 @@ impl Library {
             format: FORMAT_NAME.to_string(),
             version: FORMAT_VERSION,
             lambda: self.lambda,
+            activities: self.grouping.name().to_string(),
             type_counts: TYPE_ORDER
                 .iter()
                 .map(|&a| (a.name().to_string(), self.type_count(a)))
@@ -442,7 +465,21 @@ impl Library {
             field: String::new(),
             message: e.to_string(),
         })?;
-        let mut library = Library::new(file.lambda);
+        let grouping = Grouping::from_name(&file.activities).ok_or_else(|| {
+            LibraryError::at(
+                text,
+                "\"activities\"",
+                "activities",
+                format!(
+                    "unknown activity grouping \"{}\" (known: {})",
+                    file.activities,
+                    Grouping::ALL
+                        .map(|g| format!("\"{}\"", g.name()))
+                        .join(", ")
+                ),
+            )
+        })?;
+        let mut library = Library::with_grouping(file.lambda, grouping);
         for r in file.recordings {
             if library.recordings.contains_key(&r.hash) {
                 return Err(LibraryError::at(
@@ -555,12 +592,20 @@ impl std::fmt::Display for LibraryError {
 
 impl std::error::Error for LibraryError {}
 
+fn runs_grouping() -> String {
+    Grouping::Runs.name().to_string()
+}
+
 #[derive(Debug, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct LibraryFile {
     format: String,
     version: u32,
     lambda: u32,
+    /// How segments were grouped into activities ([`Grouping::name`]). Files written
+    /// before the field existed counted runs of one class.
+    #[serde(default = "runs_grouping")]
+    activities: String,
     /// Derived (sums of counts); written for readers, ignored when read.
     #[serde(default)]
     type_counts: BTreeMap<String, u64>,

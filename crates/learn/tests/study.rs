@@ -6,7 +6,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Library, RecordingInfo, TYPE_ORDER};
+use learn::{levels, DomainOptions, Grouping, Library, RecordingInfo, TYPE_ORDER};
 use segment::ActivityTree;
 
 /// A simulated demonstration ready to learn from: what `demoplan learn` gets from a
@@ -96,7 +96,13 @@ fn learning_order_and_batches_do_not_change_the_library() {
     for (i, r) in recordings.iter().enumerate() {
         add(if i % 3 == 0 { &mut a } else { &mut b }, r);
     }
-    a.merge(&b);
+    a.merge(&b).unwrap();
+    assert_eq!(batch.to_json(), a.to_json());
+    // A library that groups segments otherwise counts other things: no merging.
+    let mut runs = Library::with_grouping(learn::DEFAULT_LAMBDA, Grouping::Runs);
+    add(&mut runs, &recordings[0]);
+    let error = a.merge(&runs).unwrap_err();
+    assert!(error.to_string().contains("`runs` activities"), "{error}");
     assert_eq!(batch.to_json(), a.to_json());
 }
 
@@ -115,7 +121,7 @@ fn a_recording_is_never_counted_twice() {
     // Also through a file, and through merging a library that has it.
     let mut read = Library::from_json(&before).unwrap();
     assert_eq!(add(&mut read, &recordings[0]), learn::Added::AlreadyCounted);
-    read.merge(&library);
+    read.merge(&library).unwrap();
     assert_eq!(read.to_json(), before);
 }
 
@@ -133,7 +139,7 @@ fn the_file_round_trips_and_counts_add_up() {
     // Every activity is one operator occurrence; type counts are sums of counts.
     let activities: u64 = recordings
         .iter()
-        .map(|r| learn::activities(&r.segmented.segments).len() as u64)
+        .map(|r| learn::activities(&r.segmented.segments, library.grouping).len() as u64)
         .sum();
     assert_eq!(library.segments(), activities);
     let by_type: u64 = TYPE_ORDER.iter().map(|&a| library.type_count(a)).sum();
@@ -155,19 +161,91 @@ fn the_default_study_gives_a_library_of_the_papers_size() {
         .iter()
         .map(|l| l.operators.len())
         .collect();
-    // The paper: 115 activities, 30 operators, domains of 5, 11, 18, 23, 30.
+    // The paper: 115 activities, 30 operators, domains of 5, 11, 18, 23, 30. Issue 7's
+    // bars: at least 100 activities, 20 to 40 operators, the most frequent operator of
+    // each type at least 40% of its type, at least a quarter of the operators seen once,
+    // at least 4 levels.
     assert!(
         library.segments() >= 100,
         "{} activities",
         library.segments()
     );
+    assert!(
+        (20..=40).contains(&library.len()),
+        "{} operators",
+        library.len()
+    );
     for a in TYPE_ORDER {
-        assert!(!library.ranked_type(a).is_empty(), "no {a} operator");
+        let ranked = library.ranked_type(a);
+        assert!(!ranked.is_empty(), "no {a} operator");
+        let share = ranked[0].count() as f64 / library.type_count(a) as f64;
+        assert!(share >= 0.4, "{a}: top operator holds {share:.2}");
     }
+    let once = library.entries().filter(|e| e.count == 1).count();
+    assert!(
+        4 * once >= library.len(),
+        "{once} of {} seen once",
+        library.len()
+    );
     assert!(sizes.len() >= 4, "levels {sizes:?}");
     assert!(sizes.windows(2).all(|w| w[0] < w[1]), "levels {sizes:?}");
     assert_eq!(
         sizes[0], 5,
         "one operator per type at priority 1 (no ties at the top)"
+    );
+}
+
+#[test]
+fn settling_idles_end_the_activity_before_them() {
+    let recordings = default_recordings();
+    let mut settled = 0;
+    let mut runs = 0;
+    for r in &recordings {
+        let by_runs = learn::activities(&r.segmented.segments, Grouping::Runs);
+        let by_settling = learn::activities(&r.segmented.segments, Grouping::Settled);
+        // Every settled activity is a run, or a run and the Idle run after it: it ends
+        // where some run ends and never starts with an Idle after another activity.
+        for a in &by_settling {
+            assert!(by_runs.iter().any(|b| b.hand == a.hand && b.end == a.end));
+            assert!(by_runs
+                .iter()
+                .any(|b| b.hand == a.hand && b.start == a.start));
+        }
+        for w in by_settling.windows(2) {
+            if w[0].hand == w[1].hand {
+                assert!(
+                    w[1].activity != segment::Activity::Idle,
+                    "an Idle after {:?} at {} was not taken in",
+                    w[0].activity,
+                    w[1].start
+                );
+            }
+        }
+        settled += by_settling.len();
+        runs += by_runs.len();
+    }
+    assert!(settled < runs, "{settled} settled activities, {runs} runs");
+}
+
+#[test]
+fn a_library_records_its_grouping_and_old_files_counted_runs() {
+    let recordings = default_recordings();
+    let mut library = Library::with_grouping(learn::DEFAULT_LAMBDA, Grouping::Runs);
+    add(&mut library, &recordings[0]);
+    let text = library.to_json();
+    assert!(text.contains("\"activities\": \"runs\""), "{text}");
+    assert_eq!(Library::from_json(&text).unwrap().grouping, Grouping::Runs);
+    // Written before the field existed: runs.
+    let old = text.replace("  \"activities\": \"runs\",\n", "");
+    assert_ne!(old, text);
+    assert_eq!(Library::from_json(&old).unwrap(), library);
+    let unknown = text.replace("\"activities\": \"runs\"", "\"activities\": \"phases\"");
+    let error = Library::from_json(&unknown).unwrap_err();
+    assert!(error.line > 0, "{error}");
+    assert!(
+        error
+            .to_string()
+            .contains("unknown activity grouping \"phases\""),
+        "{error}"
     );
 }

@@ -11,7 +11,10 @@ use crate::segmented::SegmentedVec;
 use crate::state::{StateId, StatePacker, StateRegistry};
 use crate::successor::SuccessorGenerator;
 
-/// How often (in open-list pops) the limits are checked.
+/// How often (in open-list pops and heuristic evaluations together) the limits are
+/// checked. Evaluations count too: on large tasks one expansion may evaluate hundreds of
+/// successors with LM-cut, a millisecond each, and a check per 64 pops alone let the
+/// time limit slip by seconds.
 const CHECK_INTERVAL: u32 = 64;
 
 /// When to give up. The default has no limits.
@@ -252,8 +255,8 @@ impl StateInfo {
 /// memory: O(registered states * (8 * state words + 24 bytes + hash table)). The result is deterministic:
 /// the same task and heuristic give the same plan and the same counts.
 ///
-/// Limits are checked every few dozen expansions; `observer` is called at each new,
-/// higher f-layer (including the first).
+/// Limits are checked every few dozen expansions and evaluations; `observer` is called
+/// at each new, higher f-layer (including the first).
 pub fn astar<H: Heuristic + ?Sized>(
     task: &Task,
     heuristic: &mut H,
@@ -311,14 +314,8 @@ pub fn astar<H: Heuristic + ?Sized>(
     let mut layer: Option<u64> = None;
     let mut until_check = 1; // Check before the first expansion, then every interval.
     loop {
-        until_check -= 1;
-        if until_check == 0 {
-            until_check = CHECK_INTERVAL;
-            if let Some(outcome) = check_limits(limits, || {
-                registry.memory_bytes() + info.memory_bytes() + open.memory_bytes()
-            }) {
-                return finish(outcome, stats, &registry);
-            }
+        if let Some(outcome) = limit_reached(&mut until_check, limits, &registry, &info, &open) {
+            return finish(outcome, stats, &registry);
         }
         let Some((f, h, id)) = open.pop() else {
             return finish(Outcome::Unsolvable, stats, &registry);
@@ -364,6 +361,11 @@ pub fn astar<H: Heuristic + ?Sized>(
                 return finish(Outcome::MemoryLimit, stats, &registry);
             };
             if is_new {
+                if let Some(outcome) =
+                    limit_reached(&mut until_check, limits, &registry, &info, &open)
+                {
+                    return finish(outcome, stats, &registry);
+                }
                 child.copy_from_slice(&state);
                 ops.apply_unpacked(o, &mut child);
                 stats.evaluated += 1;
@@ -396,6 +398,25 @@ pub fn astar<H: Heuristic + ?Sized>(
             }
         }
     }
+}
+
+/// Counts one pop or evaluation down; every [`CHECK_INTERVAL`]-th, the outcome the
+/// limits call for, if any, with the search's own memory as the fallback measure.
+fn limit_reached(
+    until_check: &mut u32,
+    limits: &SearchLimits,
+    registry: &StateRegistry,
+    info: &StateInfo,
+    open: &OpenList,
+) -> Option<Outcome> {
+    *until_check -= 1;
+    if *until_check > 0 {
+        return None;
+    }
+    *until_check = CHECK_INTERVAL;
+    check_limits(limits, || {
+        registry.memory_bytes() + info.memory_bytes() + open.memory_bytes()
+    })
 }
 
 /// The outcome the limits call for, if any.

@@ -64,16 +64,18 @@ pub struct LearnArgs {
     pub library: Option<PathBuf>,
     pub out: PathBuf,
     pub lambda: Option<u32>,
+    /// `--activities`: how segments become activities, for a new library.
+    pub grouping: Option<learn::Grouping>,
     pub config: Option<PathBuf>,
     pub tree: Option<PathBuf>,
     /// How long to wait for another writer's lock on the output (`None`: no limit).
     pub lock_timeout: Option<std::time::Duration>,
 }
 
-/// The lambda of `--lambda` must be the library's.
+/// The lambda of `--lambda` and the grouping of `--activities` must be the library's.
 fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), Failure> {
-    match args.lambda.filter(|&l| l != library.lambda) {
-        Some(l) => Err(Failure::plain(
+    if let Some(l) = args.lambda.filter(|&l| l != library.lambda) {
+        return Err(Failure::plain(
             ExitCode::USAGE,
             format!(
                 "--lambda {l} differs from the library's lambda {} ({}); costs of one \
@@ -81,9 +83,21 @@ fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), 
                 library.lambda,
                 path.display()
             ),
-        )),
-        None => Ok(()),
+        ));
     }
+    if let Some(g) = args.grouping.filter(|&g| g != library.grouping) {
+        return Err(Failure::plain(
+            ExitCode::USAGE,
+            format!(
+                "--activities {} differs from the library's `{}` activities ({}); one \
+                 library counts activities of one kind",
+                g.name(),
+                library.grouping.name(),
+                path.display()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// A recording given to `learn`: its content hash and, unless the library already had
@@ -137,7 +151,10 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
             check_lambda(&args, path, &library)?;
             library
         }
-        None => Library::new(args.lambda.unwrap_or(learn::DEFAULT_LAMBDA)),
+        None => Library::with_grouping(
+            args.lambda.unwrap_or(learn::DEFAULT_LAMBDA),
+            args.grouping.unwrap_or_default(),
+        ),
     };
     let mut log = String::new();
     for input in inputs {

@@ -2,6 +2,7 @@
 //! each hand's frames into segments and classify them; print a table or JSON.
 
 use std::fmt::Write as _;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use grounding::{FactSpace, State};
@@ -25,8 +26,13 @@ pub struct SegmentArgs {
 pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
     let config = demo_input::config(args.config.as_deref())?;
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
-    let mut text = String::new();
-    let mut files = Vec::new();
+    // Each file is printed as soon as it is segmented, and JSON one segment at a time:
+    // memory follows one file's segments, not the text of all of them (an hour's
+    // recording has thousands of segments, each with two fact lists).
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    if args.json {
+        write_out(&mut out, "{\n  \"files\": [")?;
+    }
     for (i, path) in args.files.iter().enumerate() {
         let segmented = if demo_input::is_arff(path) {
             let frames = demo_input::hand_frames(path)?;
@@ -51,21 +57,88 @@ pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
             demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})?
         };
         if args.json {
-            files.push(to_json(path, &segmented));
+            write_out(&mut out, if i > 0 { ",\n" } else { "\n" })?;
+            write_file_json(&mut out, path, &segmented)?;
         } else {
+            let mut text = String::new();
             if i > 0 {
                 text.push('\n');
             }
             table(&mut text, path, &segmented);
+            write_out(&mut out, &text)?;
         }
     }
     if args.json {
-        let doc = json!({ "files": files });
-        text = serde_json::to_string_pretty(&doc).unwrap_or_default();
-        text.push('\n');
+        let end = if args.files.is_empty() {
+            "]\n}\n"
+        } else {
+            "\n  ]\n}\n"
+        };
+        write_out(&mut out, end)?;
     }
-    print!("{text}");
-    Ok(ExitCode::SUCCESS)
+    out.flush()
+        .map_err(|e| output_failure(&e))
+        .map(|()| ExitCode::SUCCESS)
+}
+
+fn output_failure(e: &std::io::Error) -> Failure {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        // The reader stopped early (`| head`): no error (see main.rs).
+        Failure::plain(ExitCode::OUTPUT_CLOSED, String::new())
+    } else {
+        Failure::plain(
+            ExitCode::CRITICAL_ERROR,
+            format!("cannot write to standard output: {e}"),
+        )
+    }
+}
+
+fn write_out(out: &mut impl Write, text: &str) -> Result<(), Failure> {
+    out.write_all(text.as_bytes())
+        .map_err(|e| output_failure(&e))
+}
+
+/// Writes `text` (pretty JSON, no raw newlines inside strings) indented by `indent`
+/// spaces from its second line on, as it sits nested in the whole document.
+fn write_nested(out: &mut impl Write, text: &str, indent: usize) -> Result<(), Failure> {
+    let pad = " ".repeat(indent);
+    let mut nested = String::with_capacity(text.len() + 64);
+    for (i, line) in text.lines().enumerate() {
+        if i > 0 {
+            nested.push('\n');
+            nested.push_str(&pad);
+        }
+        nested.push_str(line);
+    }
+    write_out(out, &nested)
+}
+
+/// One entry of `files`: what `serde_json::to_string_pretty` would print for it inside
+/// the document, written a segment at a time. Its keys are in serde_json's order
+/// (sorted), so `segments` comes last.
+fn write_file_json(out: &mut impl Write, path: &Path, s: &Segmented) -> Result<(), Failure> {
+    let head = json!({
+        "file": path.display().to_string(),
+        "recording": s.header.id,
+        "frames": s.frames,
+        "duration": s.duration,
+        "hands": s.space.hands().iter().map(|&h| name(&s.header, Some(h))).collect::<Vec<_>>(),
+    });
+    let head = serde_json::to_string_pretty(&head).unwrap_or_default();
+    // Everything but the closing brace, then the segments.
+    let open = head.strip_suffix("\n}").unwrap_or(&head);
+    write_out(out, "    ")?;
+    write_nested(out, open, 4)?;
+    if s.segments.is_empty() {
+        return write_out(out, ",\n      \"segments\": []\n    }");
+    }
+    write_out(out, ",\n      \"segments\": [")?;
+    for (i, g) in s.segments.iter().enumerate() {
+        write_out(out, if i > 0 { ",\n        " } else { "\n        " })?;
+        let text = serde_json::to_string_pretty(&segment_json(s, g)).unwrap_or_default();
+        write_nested(out, &text, 8)?;
+    }
+    write_out(out, "\n      ]\n    }")
 }
 
 fn name(header: &Header, id: Option<EntityId>) -> String {
@@ -137,16 +210,5 @@ fn segment_json(s: &Segmented, g: &Segment) -> Value {
         "acted_on": object(g.acted_on),
         "start_state": facts(&s.space, &s.header, &g.start_state),
         "end_state": facts(&s.space, &s.header, &g.end_state),
-    })
-}
-
-fn to_json(path: &Path, s: &Segmented) -> Value {
-    json!({
-        "file": path.display().to_string(),
-        "recording": s.header.id,
-        "frames": s.frames,
-        "duration": s.duration,
-        "hands": s.space.hands().iter().map(|&h| name(&s.header, Some(h))).collect::<Vec<_>>(),
-        "segments": s.segments.iter().map(|g| segment_json(s, g)).collect::<Vec<_>>(),
     })
 }

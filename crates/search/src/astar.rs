@@ -719,7 +719,11 @@ mod tests {
         // Generous for a loaded machine; checking per expansion took 3 s here.
         let evaluated = result.statistics.evaluated;
         assert!(evaluated < 60, "{evaluated} evaluations before stopping");
-        assert!(start.elapsed() < Duration::from_secs(1), "{:?}", start.elapsed());
+        assert!(
+            start.elapsed() < Duration::from_secs(1),
+            "{:?}",
+            start.elapsed()
+        );
     }
 
     #[test]

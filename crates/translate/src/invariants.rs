@@ -99,6 +99,11 @@ impl Checker<'_> {
                 }
                 self.stamp[act as usize] = self.round;
                 let action = &g.actions[act as usize];
+                if requires_two_of_a_group(g, c, &action.pre) {
+                    // Never applicable in a state where the candidate holds: by
+                    // induction over reachable states it cannot break the candidate.
+                    continue;
+                }
                 let mut added: Vec<(Vec<u32>, AtomId)> = Vec::new();
                 for &a in &action.add {
                     for part in parts_for(c, g, a) {
@@ -129,6 +134,25 @@ impl Checker<'_> {
         }
         Verdict::Invariant
     }
+}
+
+/// Whether the precondition holds two different atoms of one group of `c` (same key).
+/// Grounding is relaxed, so it keeps actions such as freecell's move of a card onto the
+/// card it already stands on (`on(c, a)` and `clear(a)` required, both in the group
+/// "what is on a"); in a state where the candidate holds, such an action never applies.
+fn requires_two_of_a_group(g: &Grounding, c: &Candidate, pre: &[AtomId]) -> bool {
+    let mut keys: Vec<(Vec<u32>, AtomId)> = Vec::new();
+    for &a in pre {
+        for part in parts_for(c, g, a) {
+            keys.push((key_of(g, part, a), a));
+        }
+    }
+    if keys.len() < 2 {
+        return false;
+    }
+    keys.sort_unstable();
+    keys.dedup();
+    keys.windows(2).any(|w| w[0].0 == w[1].0)
 }
 
 /// The parts for `atom` whose key equals `key`: invariant parameter `j` goes to a
@@ -226,7 +250,8 @@ pub(crate) fn mutex_groups(model: &Model, g: &Grounding) -> Vec<Group> {
         if examined > MAX_CANDIDATES {
             break;
         }
-        match checker.check(&c) {
+        let verdict = checker.check(&c);
+        match verdict {
             Verdict::Invariant => invariants.push(c),
             Verdict::Invalid => {}
             Verdict::Unbalanced { action, key } => {

@@ -84,12 +84,19 @@ pub(crate) fn build(
             containing[a as usize].push(i as u32);
         }
     }
+    // Ties between groups covering as many atoms: the group whose sorted atom list is
+    // greatest in the order of predicate and object names. Fast Downward's translator
+    // ends up choosing the same way (it keeps the groups sorted and takes the last of the
+    // largest). The choice shapes the variables and so LM-cut's values: in freecell it
+    // makes "what is on card X" the variables rather than "where is card X" (825 instead
+    // of 853 expansions on probfreecell-3-1, 660 instead of 723 on 3-4).
+    let rank = lexicographic_rank(model, g, &candidates);
     let mut chosen: Vec<Vec<AtomId>> = Vec::new();
     while let Some((best, size)) = candidates
         .iter()
         .enumerate()
         .map(|(i, c)| (i, c.len()))
-        .max_by_key(|&(i, len)| (len, std::cmp::Reverse(i)))
+        .max_by_key(|&(i, len)| (len, rank[i]))
     {
         if size < 2 {
             break;
@@ -298,6 +305,25 @@ fn needs_none_value(g: &Grounding, group: &[AtomId]) -> bool {
     g.actions.iter().any(|a| {
         a.del.iter().any(|d| members.contains(d)) && !a.add.iter().any(|x| members.contains(x))
     })
+}
+
+/// For each group, its position among all groups ordered by their sorted atom texts.
+fn lexicographic_rank(model: &Model, g: &Grounding, groups: &[Vec<AtomId>]) -> Vec<usize> {
+    let keys: Vec<Vec<String>> = groups
+        .iter()
+        .map(|grp| {
+            let mut atoms: Vec<String> = grp.iter().map(|&a| text(model, g, a)).collect();
+            atoms.sort_unstable();
+            atoms
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..groups.len()).collect();
+    order.sort_by(|&a, &b| keys[a].cmp(&keys[b]).then(a.cmp(&b)));
+    let mut rank = vec![0; groups.len()];
+    for (position, &group) in order.iter().enumerate() {
+        rank[group] = position;
+    }
+    rank
 }
 
 fn text(model: &Model, g: &Grounding, a: AtomId) -> String {

@@ -11,7 +11,10 @@
 //! - the initial state has at most one true atom per parameter binding;
 //! - every ground action that adds an atom of a group either requires that atom already,
 //!   or deletes another atom of the same group that its precondition requires, and it
-//!   never adds two atoms of one group.
+//!   never adds two atoms of one group;
+//! - except actions whose precondition holds two atoms of one group: in a state where
+//!   the candidate holds they never apply (by induction over the reachable states), and
+//!   relaxed grounding does keep such actions.
 //!
 //! A candidate that fails the second test on some action is refined by adding a part for
 //! a required-and-deleted atom of that action that would balance the add; refinement is a

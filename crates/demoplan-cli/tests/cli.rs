@@ -1620,12 +1620,13 @@ fn fast_downward_backends_say_clearly_when_it_is_missing() {
 
 #[test]
 fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
-    // `demoplan fmt --stdout FILE` prints the formatted PDDL: thousands of lines for a
-    // large problem.
+    // `demoplan fmt --stdout FILE...` prints the formatted PDDL: 20 KB for this problem,
+    // 400 KB for twenty of it, far more than a pipe holds (64 KB), so the writer blocks
+    // and meets the closed pipe whenever the reader goes away.
     let problem = benchmark("visitall-opt11-strips", "problem11-full").problem_file;
     let mut child = demoplan()
         .args(["fmt", "--stdout"])
-        .arg(&problem)
+        .args(std::iter::repeat_n(&problem, 20))
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()

@@ -2,13 +2,14 @@
 //!
 //! Variables are chosen greedily, as Fast Downward's translator does: the mutex group
 //! covering the most atoms not yet covered becomes a variable, until no group covers two;
-//! every other fluent atom becomes a binary variable. Two kinds of atoms stay binary,
-//! because a multi-valued variable cannot express them without conditional effects or
-//! multiplying operators out: atoms that occur negated in a precondition or the goal, and
-//! atoms that some action deletes without requiring them and without setting another
-//! value of the group. Finally, variables that cannot influence the goal (not ancestors
-//! of a goal variable in the causal graph of precondition-to-effect arcs) are removed, with the operators left without
-//! effects.
+//! every other fluent atom becomes a binary variable. Two kinds of atoms stay out of a
+//! group, because a multi-valued variable cannot express them without conditional
+//! effects or multiplying operators out: atoms that occur negated where no positive
+//! condition on another atom of the group implies the negation, and atoms that some
+//! action deletes without requiring them and without setting another value of the group.
+//! Finally, variables that cannot influence the goal (not ancestors of a goal variable in
+//! the causal graph of precondition-to-effect arcs) are removed, with the operators left
+//! without effects.
 
 use rustc_hash::FxHashSet;
 use task::{Fact, Operator, Task, VarId, Variable};
@@ -44,15 +45,16 @@ pub(crate) fn build(
     groups: &[Vec<AtomId>],
 ) -> Result<Built, TranslateError> {
     let n = g.atoms.len();
-    // Atoms that must stay binary.
-    let mut must_be_binary = vec![false; n];
+    // Where each atom occurs negated: the positive conditions beside it (an action's
+    // precondition, or the goal).
+    let mut negated_beside: Vec<Vec<&[AtomId]>> = vec![Vec::new(); n];
     for a in &g.actions {
         for &x in &a.neg {
-            must_be_binary[x as usize] = true;
+            negated_beside[x as usize].push(&a.pre);
         }
     }
     for &x in &g.goal_neg {
-        must_be_binary[x as usize] = true;
+        negated_beside[x as usize].push(&g.goal_pos);
     }
     // Actions that delete an atom without requiring it.
     let mut unrequired_deleters: Vec<Vec<u32>> = vec![Vec::new(); n];
@@ -69,12 +71,8 @@ pub(crate) fn build(
     let mut candidates: Vec<Vec<AtomId>> = groups
         .iter()
         .map(|grp| {
-            let mut c: Vec<AtomId> = grp
-                .iter()
-                .copied()
-                .filter(|&a| !must_be_binary[a as usize])
-                .collect();
-            remove_unsafely_deleted(&mut c, g, &unrequired_deleters);
+            let mut c: Vec<AtomId> = grp.clone();
+            refine(&mut c, g, &unrequired_deleters, &negated_beside);
             c
         })
         .collect();
@@ -112,7 +110,7 @@ pub(crate) fn build(
         for i in touched {
             let c = &mut candidates[i as usize];
             c.retain(|&a| !covered[a as usize]);
-            remove_unsafely_deleted(c, g, &unrequired_deleters);
+            refine(c, g, &unrequired_deleters, &negated_beside);
         }
         chosen.push(group);
     }
@@ -120,6 +118,8 @@ pub(crate) fn build(
     let mut slots: Vec<Option<Slot>> = vec![None; n];
     let mut variables: Vec<Variable> = Vec::new();
     let mut has_none: Vec<Option<u32>> = Vec::new();
+    // Whether a variable is an atom's own (values: the atom, its negation).
+    let mut binary: Vec<bool> = Vec::new();
     for group in &chosen {
         let var = variables.len() as u32;
         let mut value_names: Vec<String> = group
@@ -139,6 +139,7 @@ pub(crate) fn build(
             None
         };
         has_none.push(none);
+        binary.push(false);
         variables.push(Variable {
             name: format!("var{var}"),
             value_names,
@@ -153,6 +154,7 @@ pub(crate) fn build(
                 value_names: vec![format!("Atom {t}"), format!("NegatedAtom {t}")],
             });
             has_none.push(Some(1));
+            binary.push(true);
             slots[a as usize] = Some(Slot { var, value: 0 });
         }
     }
@@ -177,9 +179,16 @@ pub(crate) fn build(
         }
         for &x in &a.neg {
             let s = slot(x)?;
-            let value = false_value(s)
-                .ok_or_else(|| TranslateError::Internal("negated atom in a group".into()))?;
-            pre.push(Fact::new(VarId(s.var), value));
+            if binary[s.var as usize] {
+                pre.push(Fact::new(VarId(s.var), 1));
+            } else if !pre.iter().any(|f| f.var.0 == s.var && f.value != s.value) {
+                // Groups keep a negated atom only where a positive condition on another
+                // atom of the group implies the negation (`refine`).
+                return Err(TranslateError::Internal(format!(
+                    "operator {}: a negated atom of a group without the condition that implies it",
+                    action_name(model, a)
+                )));
+            }
         }
         pre.sort_unstable();
         pre.dedup();
@@ -233,9 +242,13 @@ pub(crate) fn build(
     }
     for &x in &g.goal_neg {
         let s = slot(x)?;
-        let value = false_value(s)
-            .ok_or_else(|| TranslateError::Internal("negated goal atom in a group".into()))?;
-        goal.push(Fact::new(VarId(s.var), value));
+        if binary[s.var as usize] {
+            goal.push(Fact::new(VarId(s.var), 1));
+        } else if !goal.iter().any(|f| f.var.0 == s.var && f.value != s.value) {
+            return Err(TranslateError::Internal(
+                "a negated goal atom of a group without the goal atom that implies it".into(),
+            ));
+        }
     }
     goal.sort_unstable();
     goal.dedup();
@@ -273,6 +286,36 @@ pub(crate) fn build(
 /// Drops atoms of `group` that some action deletes without requiring them and without
 /// adding another atom of the group; repeats until stable (dropping an atom can make
 /// another unsafe).
+/// Shrinks a candidate group to atoms a multi-valued variable can hold: atoms deleted
+/// without being required only where the deleting action adds another atom of the group
+/// (`remove_unsafely_deleted`), and atoms that occur negated only where a positive
+/// condition beside the negation is another atom of the group, which implies it (a
+/// variable cannot say "not this value" otherwise). The learned cube-stacking domains
+/// require `(not (inhand ?h ?c))` next to `(handopen ?h)`: with this, "the hand is open
+/// or holds one cube" becomes one variable, as in Fast Downward's translation. Repeats
+/// until neither removes anything, since each removal can take away another atom's
+/// reason to stay.
+fn refine(
+    group: &mut Vec<AtomId>,
+    g: &Grounding,
+    unrequired: &[Vec<u32>],
+    negated_beside: &[Vec<&[AtomId]>],
+) {
+    loop {
+        let before = group.len();
+        let members: FxHashSet<AtomId> = group.iter().copied().collect();
+        group.retain(|&x| {
+            negated_beside[x as usize]
+                .iter()
+                .all(|positive| positive.iter().any(|&y| y != x && members.contains(&y)))
+        });
+        remove_unsafely_deleted(group, g, unrequired);
+        if group.len() == before {
+            return;
+        }
+    }
+}
+
 fn remove_unsafely_deleted(group: &mut Vec<AtomId>, g: &Grounding, unrequired: &[Vec<u32>]) {
     if group.iter().all(|&a| unrequired[a as usize].is_empty()) {
         return;

@@ -296,6 +296,14 @@ pub fn read(text: &str) -> Result<Task, SasError> {
     Ok(task)
 }
 
+/// A name line without trailing carriage returns. Lines are split at `\n` and one `\r`
+/// of a CRLF ending is dropped; a name ending in more of them (the fuzzer wrote one)
+/// would lose one more on every write and read, so none are kept: a written task reads
+/// back unchanged.
+fn without_carriage_returns(line: &str) -> String {
+    line.trim_end_matches('\r').to_string()
+}
+
 fn read_variable(c: &mut Cursor<'_>) -> Result<Variable, SasError> {
     c.keyword("begin_variable")?;
     let name = c.next_line("a variable name")?;
@@ -314,7 +322,7 @@ fn read_variable(c: &mut Cursor<'_>) -> Result<Variable, SasError> {
     }
     let mut value_names = Vec::new();
     for _ in 0..size {
-        value_names.push(c.next_line("a value name")?.to_string());
+        value_names.push(without_carriage_returns(c.next_line("a value name")?));
     }
     c.keyword("end_variable")?;
     Ok(Variable {
@@ -325,7 +333,7 @@ fn read_variable(c: &mut Cursor<'_>) -> Result<Variable, SasError> {
 
 fn read_operator(c: &mut Cursor<'_>, variables: &[Variable]) -> Result<Operator, SasError> {
     c.keyword("begin_operator")?;
-    let name = c.next_line("an operator name")?.to_string();
+    let name = without_carriage_returns(c.next_line("an operator name")?);
     let count = c.number::<u32>("the number of prevail conditions")?;
     let mut prevail = Vec::new();
     for _ in 0..count {
@@ -711,6 +719,20 @@ end_operator
             .replace('\n', "\r\n")
             + "\n \n";
         assert_eq!(read(&text), Ok(small_task()));
+    }
+
+    /// Found by fuzzing (`fuzz/run`, target `sas_file`): an operator name ending in
+    /// several carriage returns lost one on every write and read.
+    #[test]
+    fn names_ending_in_carriage_returns_read_back_unchanged() {
+        let lines: Vec<&str> = SMALL.lines().collect();
+        let at = lines.iter().position(|l| *l == "begin_operator").unwrap() + 1;
+        let name = lines[at];
+        let text = SMALL.replacen(&format!("\n{name}\n"), &format!("\n{name}\r\r\r\n"), 1);
+        assert_ne!(text, SMALL);
+        let task = read(&text).unwrap();
+        assert_eq!(task.operators[0].name, name);
+        assert_eq!(read(&write(&task)), Ok(task));
     }
 
     #[test]

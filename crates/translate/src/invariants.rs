@@ -144,6 +144,16 @@ impl Checker<'_> {
 /// card it already stands on (`on(c, a)` and `clear(a)` required, both in the group
 /// "what is on a"); in a state where the candidate holds, such an action never applies.
 fn requires_two_of_a_group(g: &Grounding, c: &Candidate, pre: &[AtomId]) -> bool {
+    // Most actions require at most one atom of a candidate: decide those without
+    // allocating the keys (this runs per action and candidate).
+    if pre
+        .iter()
+        .filter(|&&a| parts_for(c, g, a).next().is_some())
+        .count()
+        < 2
+    {
+        return false;
+    }
     let mut keys: Vec<(Vec<u32>, AtomId)> = Vec::new();
     for &a in pre {
         for part in parts_for(c, g, a) {

@@ -34,6 +34,7 @@ mod ground;
 mod invariants;
 mod model;
 mod sas;
+mod variable_order;
 
 /// What translation can fail on, beyond what the PDDL checker already rejects.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

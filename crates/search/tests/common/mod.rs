@@ -6,7 +6,9 @@ use task::{Fact, Task};
 /// slow and obviously correct. Facts are numbered as in `LmCut` (variable offsets, then the
 /// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
 /// stated here as plainly as possible:
-/// - round 1: the first precondition (in the operator's order) of highest h^max;
+/// - an operator's preconditions are ordered: those on variables it does not change, then
+///   those on variables it changes, each from the highest variable index down;
+/// - round 1: the first precondition (in that order) of highest h^max;
 /// - later rounds: the supporter of the round before while it still has the highest
 ///   h^max, else the first precondition of highest h^max;
 /// - while the goal zone is marked (depth first from the goal fact, achievers in operator
@@ -26,7 +28,15 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         .operators
         .iter()
         .map(|o| {
-            let mut pre: Vec<usize> = o.preconditions.iter().map(fact).collect();
+            let changes = |f: &&Fact| o.effects.iter().any(|e| e.var == f.var);
+            let mut pre: Vec<usize> = o
+                .preconditions
+                .iter()
+                .rev()
+                .filter(|f| !changes(f))
+                .chain(o.preconditions.iter().rev().filter(|f| changes(f)))
+                .map(fact)
+                .collect();
             if pre.is_empty() {
                 pre.push(fact_i);
             }

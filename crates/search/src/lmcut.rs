@@ -134,20 +134,68 @@ fn first_with_cost(pres: &[u32], facts: &[RelaxedFact], cost: u64) -> Option<u32
 
 /// An operator's preconditions in the order LM-cut breaks ties in (the first of highest
 /// h^max becomes the supporter): those on variables the operator does not change, then
-/// those on variables it changes, each from the last variable to the first.
+/// those on variables it changes, each by `rank` (see [`atom_order_ranks`]).
 ///
-/// Ties decide which landmarks LM-cut finds, and this order gives the values of Fast
-/// Downward's LM-cut on the variable order both translators produce (causal graph
-/// order): Fast Downward lists prevail conditions before the others, each by its
-/// translator's variable numbering before the causal-graph reordering, which on the
-/// benchmarks runs mostly against the final order. Expansions with this order against
-/// preconditions by ascending variable (Fast Downward in brackets): satellite p09 386 /
-/// 582 (344), satellite p07 2,004 / 4,341 (2,004), freecell 3-3 56 / 108 (44).
-fn tie_breaking_order(op: &task::Operator) -> impl Iterator<Item = &task::Fact> {
+/// Ties decide which landmarks LM-cut finds. This is the order in which Fast Downward's
+/// search reads the preconditions from its translator's file (prevail conditions, then
+/// the others, each sorted by the variable numbering before the causal-graph
+/// reordering), so both planners mostly find the same landmarks on the same task (the
+/// rest of Fast Downward's ties, such as its queue's order, are not reproduced).
+/// Expansions with this order / with preconditions by ascending variable index (Fast
+/// Downward in brackets): satellite p09 386 / 582 (344), p07 2,004 / 4,341 (2,004),
+/// freecell 3-3 62 / 108 (44).
+pub fn tie_breaking_order<'a>(
+    op: &'a task::Operator,
+    rank: &[u32],
+) -> impl Iterator<Item = &'a task::Fact> {
     let changes = |f: &task::Fact| op.effects.iter().any(|e| e.var == f.var);
-    let unchanged = op.preconditions.iter().rev().filter(move |f| !changes(f));
-    let changed = op.preconditions.iter().rev().filter(move |f| changes(f));
-    unchanged.chain(changed)
+    let mut order: Vec<(bool, u32, &task::Fact)> = op
+        .preconditions
+        .iter()
+        .map(|f| (changes(f), rank[f.var.index()], f))
+        .collect();
+    order.sort_by_key(|&(changed, rank, _)| (changed, rank));
+    order.into_iter().map(|(_, _, f)| f)
+}
+
+/// For each variable, its position when variables are sorted by their atoms: the
+/// `Atom predicate(arguments)` value names, read as (predicate, arguments), each
+/// variable's sorted, variables compared by those lists (ties, such as variables without
+/// atom names, by index). This is how Fast Downward's translator numbers variables before
+/// it orders them by the causal graph, so it can be recovered from any translation,
+/// demoplan's or Fast Downward's output.sas.
+pub fn atom_order_ranks(task: &Task) -> Vec<u32> {
+    fn atom(value_name: &str) -> Option<(&str, Vec<&str>)> {
+        let atom = value_name.strip_prefix("Atom ")?;
+        Some(match atom.split_once('(') {
+            Some((predicate, rest)) => {
+                let args = rest.strip_suffix(')').unwrap_or(rest);
+                let args = if args.is_empty() {
+                    Vec::new()
+                } else {
+                    args.split(", ").collect()
+                };
+                (predicate, args)
+            }
+            None => (atom, Vec::new()),
+        })
+    }
+    let keys: Vec<Vec<(&str, Vec<&str>)>> = task
+        .variables
+        .iter()
+        .map(|v| {
+            let mut atoms: Vec<_> = v.value_names.iter().filter_map(|n| atom(n)).collect();
+            atoms.sort_unstable();
+            atoms
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..keys.len()).collect();
+    order.sort_by(|&a, &b| keys[a].cmp(&keys[b]).then(a.cmp(&b)));
+    let mut rank = vec![0u32; keys.len()];
+    for (position, &var) in order.iter().enumerate() {
+        rank[var] = position as u32;
+    }
+    rank
 }
 
 /// Makes `fact` the supporter of operator `o`, at the head of `fact`'s list.
@@ -274,9 +322,10 @@ impl LmCut {
             pre.extend(pres);
             eff.extend(effs);
         };
+        let rank = atom_order_ranks(task);
         for op in &task.operators {
             add(
-                tie_breaking_order(op).map(fact).collect(),
+                tie_breaking_order(op, &rank).map(fact).collect(),
                 op.effects.iter().map(fact).collect(),
                 task.cost(op),
             );
@@ -579,5 +628,53 @@ impl Heuristic for LmCut {
             self.second_exploration();
         }
         Some(h)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use task::{Fact, Operator, VarId, Variable};
+
+    fn variable(values: &[&str]) -> Variable {
+        Variable {
+            name: "v".into(),
+            value_names: values.iter().map(|s| s.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn variables_rank_by_their_sorted_atoms() {
+        let task = Task {
+            variables: vec![
+                variable(&["Atom on(b, a)", "Atom on(a, b)", "<none of those>"]),
+                variable(&["Atom clear(a)", "NegatedAtom clear(a)"]),
+                variable(&["x", "y"]),
+                variable(&["Atom on(a, a)", "Atom on(c, b)"]),
+                variable(&["Atom handempty()", "NegatedAtom handempty()"]),
+            ],
+            mutexes: vec![],
+            initial_state: vec![0; 5],
+            goal: vec![],
+            operators: vec![],
+            use_costs: false,
+        };
+        // Without atom names first, then clear(a) < handempty() < [on(a, a), on(c, b)]
+        // < [on(a, b), on(b, a)]: lists compare atom by atom.
+        assert_eq!(atom_order_ranks(&task), vec![4, 1, 0, 3, 2]);
+    }
+
+    #[test]
+    fn ties_go_to_unchanged_variables_first_then_by_rank() {
+        let f = |v: u32| Fact::new(VarId(v), 0);
+        let op = Operator {
+            name: "o".into(),
+            preconditions: vec![f(0), f(1), f(2), f(3)],
+            effects: vec![Fact::new(VarId(1), 1), Fact::new(VarId(2), 1)],
+            cost: 1,
+        };
+        let rank = [3, 0, 2, 1];
+        let order: Vec<u32> = tie_breaking_order(&op, &rank).map(|f| f.var.0).collect();
+        assert_eq!(order, vec![3, 0, 1, 2]);
     }
 }

@@ -6,8 +6,7 @@ use task::{Fact, Task};
 /// slow and obviously correct. Facts are numbered as in `LmCut` (variable offsets, then the
 /// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
 /// stated here as plainly as possible:
-/// - an operator's preconditions are ordered: those on variables it does not change, then
-///   those on variables it changes, each from the highest variable index down;
+/// - an operator's preconditions are ordered by `search::tie_breaking_order`;
 /// - round 1: the first precondition (in that order) of highest h^max;
 /// - later rounds: the supporter of the round before while it still has the highest
 ///   h^max, else the first precondition of highest h^max;
@@ -24,19 +23,12 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
     }
     let (fact_i, fact_g) = (n, n + 1);
     let fact = |f: &Fact| offset[f.var.index()] + f.value as usize;
+    let rank = search::atom_order_ranks(task);
     let mut ops: Vec<(Vec<usize>, Vec<usize>, u64)> = task
         .operators
         .iter()
         .map(|o| {
-            let changes = |f: &&Fact| o.effects.iter().any(|e| e.var == f.var);
-            let mut pre: Vec<usize> = o
-                .preconditions
-                .iter()
-                .rev()
-                .filter(|f| !changes(f))
-                .chain(o.preconditions.iter().rev().filter(|f| changes(f)))
-                .map(fact)
-                .collect();
+            let mut pre: Vec<usize> = search::tie_breaking_order(o, &rank).map(fact).collect();
             if pre.is_empty() {
                 pre.push(fact_i);
             }

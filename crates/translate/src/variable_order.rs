@@ -2,8 +2,8 @@
 //!
 //! The order is not cosmetic: LM-cut breaks ties between preconditions of equal h^max by
 //! their position, and those ties decide which landmarks it finds. Fast Downward orders
-//! variables in two steps, and demoplan does the same so that both planners search with
-//! the same heuristic values:
+//! variables in two steps, and demoplan does the same so that both planners break LM-cut's
+//! ties alike (`tests/fast_downward_order.rs` checks the order on recorded translations):
 //!
 //! 1. Variables are numbered by their atoms: each variable's atoms sorted by predicate
 //!    name and then argument names, and the variables sorted by those lists.

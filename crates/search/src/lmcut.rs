@@ -6,9 +6,10 @@
 //!
 //! 1. h^max of every fact, and for every operator its *supporter*: a precondition of
 //!    highest h^max. Ties matter for the quality of the cuts: the first round takes the
-//!    first such precondition in the operator's tie-breaking order (`tie_breaking_order`);
-//!    later rounds keep the supporter of the round before while it is still of highest
-//!    cost. If `h^max(G) = 0`, stop.
+//!    precondition the exploration reaches last (its queue keeps a stack per cost, as Fast
+//!    Downward's bucket queue does); later rounds keep the supporter of the round before
+//!    while it is still of highest cost, else take the first of highest cost in the
+//!    operator's tie-breaking order (`tie_breaking_order`). If `h^max(G) = 0`, stop.
 //! 2. The *goal zone*: the facts from which `G` is reached through zero-cost operators,
 //!    following supporters backwards. When a zero-cost operator has several preconditions
 //!    of highest cost, its supporter becomes the first that no zero-cost operator achieves
@@ -376,13 +377,15 @@ impl LmCut {
         })
     }
 
-    /// h^max from scratch, with supporters: the first precondition (in the operator's
-    /// tie-breaking order) of highest cost.
+    /// h^max from scratch, with supporters: the precondition reached last. The radix
+    /// heap hands out the facts of one cost last in, first out, like Fast Downward's
+    /// bucket queue; with its ties this is closer to Fast Downward's values than the first
+    /// precondition of highest cost (pegsol p20: 50,755 expansions against 80,785; Fast
+    /// Downward 54,091).
     fn first_exploration(&mut self, state: &[u32]) {
         let LmCut {
             ops,
             facts,
-            pre,
             eff,
             pre_of_start,
             pre_of,
@@ -415,15 +418,10 @@ impl LmCut {
                 let op = &mut ops[o as usize];
                 op.unsatisfied -= 1;
                 if op.unsatisfied == 0 {
-                    // Every precondition is reached at a cost of at most `c`, `f` at `c`.
+                    // Every precondition is reached at a cost of at most `c`, `f` at `c`:
+                    // `f`, the one reached last, is a precondition of highest cost.
                     let op = *op;
-                    let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
-                    let supporter = if op.num_pre == 1 {
-                        f
-                    } else {
-                        first_with_cost(pres, facts, c).unwrap_or(f)
-                    };
-                    link(ops, facts, o, supporter);
+                    link(ops, facts, o, f);
                     relax_effects(
                         &eff[op.eff_start as usize..op.eff_end as usize],
                         op.cost + c,

@@ -7,7 +7,7 @@ use task::{Fact, Task};
 /// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
 /// stated here as plainly as possible:
 /// - an operator's preconditions are ordered by `search::tie_breaking_order`;
-/// - round 1: the first precondition (in that order) of highest h^max;
+/// - round 1: the precondition reached last (`first_supporters`);
 /// - later rounds: the supporter of the round before while it still has the highest
 ///   h^max, else the first precondition of highest h^max;
 /// - while the goal zone is marked (depth first from the goal fact, achievers in operator
@@ -45,7 +45,7 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         in_state[offset[var] + value as usize] = true;
     }
     in_state[fact_i] = true;
-    let mut supporter: Vec<Option<usize>> = vec![None; ops.len()];
+    let mut supporter = first_supporters(&ops, state, &offset, fact_i);
     let mut h = 0;
     loop {
         let mut hm: Vec<u64> = in_state.iter().map(|&t| if t { 0 } else { INF }).collect();
@@ -114,6 +114,62 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
             ops[o].2 -= m;
         }
     }
+}
+
+/// Round 1's supporters: for each operator, the precondition reached last by a Dijkstra
+/// exploration whose queue keeps a stack per cost (of the facts queued at one cost, the
+/// last queued comes out first). It starts with the state's facts in variable order, then
+/// the always-true fact; a fact coming out triggers the operators it is a precondition of
+/// in index order, and an operator whose preconditions are all reached queues its effects
+/// in its order where they get cheaper. This is how both LmCut and Fast Downward explore.
+fn first_supporters(
+    ops: &[(Vec<usize>, Vec<usize>, u64)],
+    state: &[u32],
+    offset: &[usize],
+    fact_i: usize,
+) -> Vec<Option<usize>> {
+    use std::collections::BTreeMap;
+    let facts = fact_i + 2;
+    let mut cost = vec![u64::MAX; facts];
+    let mut unsatisfied: Vec<usize> = ops.iter().map(|(pre, _, _)| pre.len()).collect();
+    let mut precondition_of: Vec<Vec<usize>> = vec![Vec::new(); facts];
+    for (o, (pre, _, _)) in ops.iter().enumerate() {
+        for &p in pre {
+            precondition_of[p].push(o);
+        }
+    }
+    let mut queue: BTreeMap<u64, Vec<usize>> = BTreeMap::new();
+    let push = |queue: &mut BTreeMap<u64, Vec<usize>>, cost: &mut [u64], f: usize, c: u64| {
+        if c < cost[f] {
+            cost[f] = c;
+            queue.entry(c).or_default().push(f);
+        }
+    };
+    for (var, &value) in state.iter().enumerate() {
+        push(&mut queue, &mut cost, offset[var] + value as usize, 0);
+    }
+    push(&mut queue, &mut cost, fact_i, 0);
+    let mut supporter = vec![None; ops.len()];
+    while let Some(mut entry) = queue.first_entry() {
+        let c = *entry.key();
+        let f = entry.get_mut().pop().unwrap();
+        if entry.get().is_empty() {
+            entry.remove();
+        }
+        if c > cost[f] {
+            continue;
+        }
+        for &o in &precondition_of[f] {
+            unsatisfied[o] -= 1;
+            if unsatisfied[o] == 0 {
+                supporter[o] = Some(f);
+                for &e in &ops[o].1 {
+                    push(&mut queue, &mut cost, e, c + ops[o].2);
+                }
+            }
+        }
+    }
+    supporter
 }
 
 /// Marks the goal zone depth first from `fact`, breaking supporter ties of zero-cost

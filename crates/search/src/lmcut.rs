@@ -138,7 +138,7 @@ fn first_with_cost(pres: &[u32], facts: &[RelaxedFact], cost: u64) -> Option<u32
 
 /// An operator's preconditions in the order LM-cut breaks ties in (the first of highest
 /// h^max becomes the supporter): those on variables the operator does not change, then
-/// those on variables it changes, each by `rank` (see [`atom_order_ranks`]).
+/// those on variables it changes, each by `rank` (see [`Task::atom_order_ranks`]).
 ///
 /// Ties decide which landmarks LM-cut finds. This is the order in which Fast Downward's
 /// search reads the preconditions from its translator's file (prevail conditions, then
@@ -160,46 +160,6 @@ pub fn tie_breaking_order<'a>(
         .collect();
     order.sort_by_key(|&(changed, rank, _)| (changed, rank));
     order.into_iter().map(|(_, _, f)| f)
-}
-
-/// For each variable, its position when variables are sorted by their atoms: the
-/// `Atom predicate(arguments)` value names, read as (predicate, arguments), each
-/// variable's sorted, variables compared by those lists (ties, such as variables without
-/// atom names, by index). This is how Fast Downward's translator numbers variables before
-/// it orders them by the causal graph, so it can be recovered from any translation,
-/// demoplan's or Fast Downward's output.sas.
-pub fn atom_order_ranks(task: &Task) -> Vec<u32> {
-    fn atom(value_name: &str) -> Option<(&str, Vec<&str>)> {
-        let atom = value_name.strip_prefix("Atom ")?;
-        Some(match atom.split_once('(') {
-            Some((predicate, rest)) => {
-                let args = rest.strip_suffix(')').unwrap_or(rest);
-                let args = if args.is_empty() {
-                    Vec::new()
-                } else {
-                    args.split(", ").collect()
-                };
-                (predicate, args)
-            }
-            None => (atom, Vec::new()),
-        })
-    }
-    let keys: Vec<Vec<(&str, Vec<&str>)>> = task
-        .variables
-        .iter()
-        .map(|v| {
-            let mut atoms: Vec<_> = v.value_names.iter().filter_map(|n| atom(n)).collect();
-            atoms.sort_unstable();
-            atoms
-        })
-        .collect();
-    let mut order: Vec<usize> = (0..keys.len()).collect();
-    order.sort_by(|&a, &b| keys[a].cmp(&keys[b]).then(a.cmp(&b)));
-    let mut rank = vec![0u32; keys.len()];
-    for (position, &var) in order.iter().enumerate() {
-        rank[var] = position as u32;
-    }
-    rank
 }
 
 /// Makes `fact` the supporter of operator `o`, at the head of `fact`'s list.
@@ -326,7 +286,7 @@ impl LmCut {
             pre.extend(pres);
             eff.extend(effs);
         };
-        let rank = atom_order_ranks(task);
+        let rank = task.atom_order_ranks();
         for op in &task.operators {
             add(
                 tie_breaking_order(op, &rank).map(fact).collect(),
@@ -660,7 +620,7 @@ mod tests {
         };
         // Without atom names first, then clear(a) < handempty() < [on(a, a), on(c, b)]
         // < [on(a, b), on(b, a)]: lists compare atom by atom.
-        assert_eq!(atom_order_ranks(&task), vec![4, 1, 0, 3, 2]);
+        assert_eq!(task.atom_order_ranks(), vec![4, 1, 0, 3, 2]);
     }
 
     #[test]

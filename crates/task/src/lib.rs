@@ -158,6 +158,46 @@ pub enum TaskError {
 }
 
 impl Task {
+    /// For each variable, its position when variables are sorted by their atoms: the
+    /// `Atom predicate(arguments)` value names, read as (predicate, arguments), each
+    /// variable's sorted, variables compared by those lists (ties, such as variables without
+    /// atom names, by index). This is how Fast Downward's translator numbers variables before
+    /// it orders them by the causal graph, so it can be recovered from any translation,
+    /// demoplan's or Fast Downward's output.sas.
+    pub fn atom_order_ranks(&self) -> Vec<u32> {
+        fn atom(value_name: &str) -> Option<(&str, Vec<&str>)> {
+            let atom = value_name.strip_prefix("Atom ")?;
+            Some(match atom.split_once('(') {
+                Some((predicate, rest)) => {
+                    let args = rest.strip_suffix(')').unwrap_or(rest);
+                    let args = if args.is_empty() {
+                        Vec::new()
+                    } else {
+                        args.split(", ").collect()
+                    };
+                    (predicate, args)
+                }
+                None => (atom, Vec::new()),
+            })
+        }
+        let keys: Vec<Vec<(&str, Vec<&str>)>> = self
+            .variables
+            .iter()
+            .map(|v| {
+                let mut atoms: Vec<_> = v.value_names.iter().filter_map(|n| atom(n)).collect();
+                atoms.sort_unstable();
+                atoms
+            })
+            .collect();
+        let mut order: Vec<usize> = (0..keys.len()).collect();
+        order.sort_by(|&a, &b| keys[a].cmp(&keys[b]).then(a.cmp(&b)));
+        let mut rank = vec![0u32; keys.len()];
+        for (position, &var) in order.iter().enumerate() {
+            rank[var] = position as u32;
+        }
+        rank
+    }
+
     /// Checks the invariants documented on the fields.
     pub fn validate(&self) -> Result<(), TaskError> {
         for (i, v) in self.variables.iter().enumerate() {

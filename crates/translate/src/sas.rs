@@ -299,19 +299,6 @@ pub(crate) fn build(
         .filter(|grp| grp.len() >= 2)
         .collect();
 
-    // The variables' atoms, to number them by (variable_order step 1).
-    let mut atoms_of: Vec<Vec<(String, Vec<String>)>> = vec![Vec::new(); variables.len()];
-    for (a, s) in slots.iter().enumerate() {
-        if let Some(s) = s {
-            atoms_of[s.var as usize].push(atom_key(model, g, a as AtomId));
-        }
-    }
-    for atoms in &mut atoms_of {
-        atoms.sort_unstable();
-    }
-    let mut by_atoms: Vec<usize> = (0..variables.len()).collect();
-    by_atoms.sort_by(|&a, &b| atoms_of[a].cmp(&atoms_of[b]).then(a.cmp(&b)));
-
     let task = Task {
         variables,
         mutexes,
@@ -321,7 +308,7 @@ pub(crate) fn build(
         use_costs: model.use_costs,
     };
     let variables_before_relevance = task.variables.len();
-    let task = variable_order::renumber(task, &by_atoms);
+    let task = variable_order::by_atoms(task);
     Ok(Built::Task(SasResult {
         task: variable_order::by_causal_graph(keep_relevant(task)),
         variables_before_relevance,

@@ -29,6 +29,16 @@ use task::{Fact, Operator, Task, VarId, Variable};
 /// variables are taken last; it is never subtracted.
 const GOAL_WEIGHT: u64 = 100_000;
 
+/// `task` with its variables in the order of step 1 (the module documentation), read
+/// from their `Atom ...` value names by [`Task::atom_order_ranks`], the same ranks LM-cut
+/// breaks ties by.
+pub(crate) fn by_atoms(task: Task) -> Task {
+    let rank = task.atom_order_ranks();
+    let mut order: Vec<usize> = (0..rank.len()).collect();
+    order.sort_by_key(|&v| rank[v]);
+    renumber(task, &order)
+}
+
 /// `task` with its variables in the order of step 2 (the module documentation); the task
 /// must already be numbered as step 1 says.
 pub(crate) fn by_causal_graph(task: Task) -> Task {

@@ -23,7 +23,7 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
     }
     let (fact_i, fact_g) = (n, n + 1);
     let fact = |f: &Fact| offset[f.var.index()] + f.value as usize;
-    let rank = search::atom_order_ranks(task);
+    let rank = task.atom_order_ranks();
     let mut ops: Vec<(Vec<usize>, Vec<usize>, u64)> = task
         .operators
         .iter()

@@ -81,7 +81,7 @@ pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
 pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig};
-pub use lmcut::{tie_breaking_order, LmCut};
+pub use lmcut::{tie_breaking_order, LmCut, SupporterRule};
 pub use pdb::{PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};

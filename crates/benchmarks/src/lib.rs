@@ -112,6 +112,14 @@ impl Suite {
         Ok(out)
     }
 
+    /// The instance `name` of `domain` in `optimal_costs.csv`.
+    pub fn instance(&self, domain: &str, name: &str) -> Result<Instance, String> {
+        self.instances()?
+            .into_iter()
+            .find(|i| i.domain == domain && i.name == name)
+            .ok_or_else(|| format!("{domain}/{name} is not in the benchmark suite"))
+    }
+
     /// Every `.pddl` file below `downward-benchmarks`, sorted.
     pub fn pddl_files(&self) -> Result<Vec<PathBuf>, String> {
         let mut out = Vec::new();

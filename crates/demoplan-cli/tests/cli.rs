@@ -409,12 +409,8 @@ fn planner_finds_optimal_validated_plans_on_a_quick_subset_of_every_domain() {
 }
 
 fn benchmark(domain: &str, name: &str) -> benchmarks::Instance {
-    let suite = benchmarks::Suite::locate().unwrap();
-    suite
-        .instances()
-        .unwrap()
-        .into_iter()
-        .find(|i| i.domain == domain && i.name == name)
+    benchmarks::Suite::locate()
+        .and_then(|suite| suite.instance(domain, name))
         .unwrap()
 }
 

@@ -17,12 +17,8 @@ fn translated(domain: &str, instance: &str) -> Task {
 
 /// The task of a benchmark instance and its optimal cost.
 fn translated_with_optimum(domain: &str, instance: &str) -> (Task, u64) {
-    let suite = benchmarks::Suite::locate().unwrap();
-    let i = suite
-        .instances()
-        .unwrap()
-        .into_iter()
-        .find(|i| i.domain == domain && i.name == instance)
+    let i = benchmarks::Suite::locate()
+        .and_then(|suite| suite.instance(domain, instance))
         .unwrap();
     let optimum = i.optimal_cost;
     let d = pddl::parse_domain(&std::fs::read_to_string(&i.domain_file).unwrap()).unwrap();

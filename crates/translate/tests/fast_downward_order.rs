@@ -14,13 +14,9 @@
 use std::path::Path;
 
 fn translate(domain: &str, instance: &str) -> task::Task {
-    let suite = benchmarks::Suite::locate().unwrap();
-    let i = suite
-        .instances()
-        .unwrap()
-        .into_iter()
-        .find(|i| i.domain == domain && i.name == instance)
-        .unwrap_or_else(|| panic!("{domain}/{instance} is not in the benchmark suite"));
+    let i = benchmarks::Suite::locate()
+        .and_then(|suite| suite.instance(domain, instance))
+        .unwrap();
     let d = pddl::parse_domain(&std::fs::read_to_string(&i.domain_file).unwrap()).unwrap();
     let p = pddl::parse_problem(&std::fs::read_to_string(&i.problem_file).unwrap()).unwrap();
     match translate::translate(&d, &p).unwrap() {

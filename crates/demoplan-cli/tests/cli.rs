@@ -704,6 +704,47 @@ fn malformed_output_sas_is_a_search_input_error() {
     );
 }
 
+/// A plan whose cost does not fit the search's 32-bit g is refused as unsupported (exit
+/// 34), not reported with a wrapped cost, and no plan file is written.
+#[test]
+fn path_costs_beyond_32_bits_are_unsupported() {
+    let tmp = tempdir("huge-costs");
+    std::fs::write(
+        tmp.join("domain.pddl"),
+        "(define (domain steps) (:requirements :strips :action-costs)
+           (:predicates (at ?p) (next ?p ?q))
+           (:functions (total-cost))
+           (:action step :parameters (?p ?q) :precondition (and (at ?p) (next ?p ?q))
+             :effect (and (not (at ?p)) (at ?q) (increase (total-cost) 3000000000))))",
+    )
+    .unwrap();
+    std::fs::write(
+        tmp.join("problem.pddl"),
+        "(define (problem two) (:domain steps) (:objects a b c)
+           (:init (at a) (next a b) (next b c) (= (total-cost) 0))
+           (:goal (at c)) (:metric minimize (total-cost)))",
+    )
+    .unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "plan",
+            "domain.pddl",
+            "problem.pddl",
+            "--search",
+            "astar(blind())",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(34), "{}", transcript(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("6000000000"),
+        "{}",
+        transcript(&out)
+    );
+    assert!(!tmp.join("sas_plan").exists());
+}
+
 /// Each file under `fixtures/recordings` is a recording with one mistake, named after it.
 /// `inspect` reports it naming the file, the line and the field, prints no summary, and
 /// exits 31 (input error).

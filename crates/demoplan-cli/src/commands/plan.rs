@@ -158,7 +158,13 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let result = match config.engine {
         search::Engine::AStar => search::astar(&task, &mut heuristic, &limits, Some(&mut observer)),
     }
-    .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?;
+    .map_err(|e| {
+        let code = match e {
+            search::SearchError::CostTooLarge { .. } => ExitCode::UNSUPPORTED,
+            _ => ExitCode::SEARCH_INPUT_ERROR,
+        };
+        Failure::plain(code, e.to_string())
+    })?;
     let stats = &result.statistics;
     if let Some(h) = stats.initial_h {
         println!("Initial heuristic value: {h}");

@@ -507,9 +507,15 @@ fn interpret_ipdb(term: &Term, with_pruning: bool) -> Result<IpdbConfig, ConfigE
         config.max_time = seconds(function, v)?;
     }
     if let Some(v) = args.take("random_seed")? {
+        // Fast Downward's bounds: -1 (its global generator, seeded 2011) or an int.
         config.random_seed = match word(v) {
-            Some("-1") => 0,
-            _ => integer(function, v, false)?,
+            Some("-1") => crate::ipdb::DEFAULT_SEED,
+            _ => u32::try_from(integer(function, v, false)?)
+                .ok()
+                .filter(|&seed| seed <= i32::MAX as u32)
+                .ok_or_else(|| {
+                    invalid(function, "`random_seed` must be -1 or at most 2147483647")
+                })?,
         };
     }
     if let Some(v) = args.take("max_generated_patterns")? {

@@ -227,10 +227,14 @@ pub struct PdbStatistics {
 }
 
 impl std::fmt::Display for PdbStatistics {
-    /// Log lines in Fast Downward's words (`Hill climbing iterations: 7`, ...), one per
-    /// line, without a final newline; the hill climbing's lines only for `ipdb`.
+    /// Log lines in Fast Downward's words (`found a better pattern with improvement 12`
+    /// per pattern the climb added, `Hill climbing iterations: 7`, ...), one per line,
+    /// without a final newline; the hill climbing's lines only for `ipdb`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if let Some(c) = &self.hill_climbing {
+            for improvement in &c.improvements {
+                writeln!(f, "found a better pattern with improvement {improvement}")?;
+            }
             writeln!(f, "Hill climbing iterations: {}", c.iterations)?;
             writeln!(
                 f,

@@ -50,9 +50,14 @@
 //!
 //! The default options are Fast Downward's (`pdb_max_size=2000000`,
 //! `collection_max_size=20000000`, `num_samples=1000`, `min_improvement=10`, no time
-//! limit); the random walks use a fixed-seed generator (SplitMix64, seed 0 by default), so
-//! a run is deterministic: the same task and options give the same collection. The
-//! random choices differ from Fast Downward's, so the collections may differ in detail.
+//! limit). The random walks draw Fast Downward's random numbers, draw for draw
+//! ([`crate::fd_random`]: its Mersenne Twister, seeded 2011 unless `random_seed` says
+//! otherwise), and choose among the applicable operators in the order of Fast Downward's
+//! successor generator: operators sorted by their preconditions (as sorted lists of
+//! variable-value pairs), then by index. On a task with Fast Downward's variables and
+//! operators in its order (`demoplan translate` gives that on all but a few benchmark
+//! domains), the climb therefore samples the same states and adds the same patterns as
+//! Fast Downward's with the same seed. A run is deterministic.
 
 use std::time::{Duration, Instant};
 
@@ -61,6 +66,8 @@ use task::{OpId, Task, VarId};
 
 use crate::astar::SearchLimits;
 use crate::cpdbs::{additive_cliques, Additivity, CanonicalPdbs};
+use crate::fd_random::FdRandom;
+pub use crate::fd_random::DEFAULT_SEED;
 use crate::pdb::{pattern_size, PatternDatabase, PatternError, PdbBuilder, MAX_PDB_SIZE};
 
 const DEAD: u32 = u32::MAX;
@@ -79,8 +86,9 @@ pub struct IpdbConfig {
     /// Time limit of the climb (`None`: unlimited, but at most half the time left before
     /// the caller's deadline if there is one; see the module documentation).
     pub max_time: Option<Duration>,
-    /// Seed of the random walks.
-    pub random_seed: u64,
+    /// Seed of the random walks' Mersenne Twister (Fast Downward's `random_seed`; its
+    /// `-1` is the default, [`DEFAULT_SEED`]).
+    pub random_seed: u32,
     /// The climb ends once this many candidate patterns were generated (`None`: no limit).
     pub max_generated_patterns: Option<u64>,
     /// Time limit of the dominance pruning of cliques after the climb (`None`: unlimited;
@@ -96,7 +104,7 @@ impl Default for IpdbConfig {
             num_samples: 1000,
             min_improvement: 10,
             max_time: None,
-            random_seed: 0,
+            random_seed: DEFAULT_SEED,
             max_generated_patterns: None,
             max_time_dominance_pruning: None,
         }
@@ -160,6 +168,9 @@ pub struct HillClimbingStatistics {
     pub sampling_time: Duration,
     /// Of which counting improved samples (and the collection's values on samples).
     pub evaluation_time: Duration,
+    /// The number of samples each added pattern improved, in the order added (Fast
+    /// Downward's "found a better pattern with improvement N").
+    pub improvements: Vec<u64>,
 }
 
 /// The `ipdb()` heuristic: the canonical heuristic over the collection the hill climbing
@@ -250,7 +261,7 @@ struct Climb<'t> {
     /// Bytes of the collection's and the candidates' tables.
     table_bytes: u64,
     stats: HillClimbingStatistics,
-    rng: Rng,
+    rng: FdRandom,
     walker: Walker,
     average_cost: f64,
     /// Sampled states, `num_vars` values each.
@@ -318,7 +329,7 @@ impl<'t> Climb<'t> {
             generated: FxHashSet::default(),
             table_bytes: 0,
             stats: HillClimbingStatistics::default(),
-            rng: Rng::new(config.random_seed),
+            rng: FdRandom::new(config.random_seed),
             walker: Walker::new(task),
             average_cost,
             samples: Vec::new(),
@@ -364,6 +375,7 @@ impl<'t> Climb<'t> {
             let Some(chosen) = self.candidates[best].take() else {
                 return ClimbEnd::Converged;
             };
+            self.stats.improvements.push(improvement);
             self.add_to_collection(chosen.pdb);
             if let Some(end) = self.generate_candidates(self.collection.len() - 1) {
                 return end;
@@ -484,10 +496,11 @@ impl<'t> Climb<'t> {
         // The number of coin flips of the binomial distribution: four times the
         // estimated number of steps, or 10 if h is 0 (then the average cost need not
         // be positive); capped far beyond any walk that could finish in reasonable time.
+        // Fast Downward truncates the rounded estimate to an int.
         let flips = if initial_h == 0 || self.average_cost <= 0.0 {
             10
         } else {
-            let steps = (initial_h as f64 / self.average_cost + 0.5).floor();
+            let steps = (initial_h as f64 / self.average_cost + 0.5).trunc();
             (4.0 * steps).min(1e9) as u64
         };
         let init = &self.task.initial_state;
@@ -495,14 +508,17 @@ impl<'t> Climb<'t> {
         let samples = self.config.num_samples as usize;
         self.samples.clear();
         for _ in 0..samples {
-            let length = self.rng.binomial_half(flips);
+            // One double per flip, as Fast Downward draws them.
+            let length = (0..flips).filter(|_| self.rng.unit() < 0.5).count();
             self.walker.set_state(init);
             for _ in 0..length {
-                let applicable = self.walker.applicable();
-                if applicable.is_empty() {
+                let applicable = self.walker.applicable().len();
+                if applicable == 0 {
                     break; // The walk ends where it is stuck.
                 }
-                let op = applicable[self.rng.below(applicable.len())];
+                // Both counts are at most the number of operators, a u32.
+                let k = self.rng.below(applicable as u32);
+                let op = self.walker.kth_in_fast_downward_order(k as usize);
                 self.walker.apply(op);
                 if self.is_dead_end(self.walker.state()) {
                     self.walker.set_state(init);
@@ -741,6 +757,10 @@ struct Walker {
     applicable: Vec<OpId>,
     place: Vec<u32>,
     state: Vec<u32>,
+    /// Each operator's place in the order of Fast Downward's successor generator.
+    fd_rank: Vec<u32>,
+    /// Scratch space for choosing among the applicable operators.
+    chooser: Vec<OpId>,
 }
 
 impl Walker {
@@ -775,7 +795,30 @@ impl Walker {
             .iter()
             .map(|op| op.preconditions.len() as u32)
             .collect();
+        // Fast Downward's successor generator yields the applicable operators in the
+        // order of their sorted preconditions (lexicographically), ties by index.
+        let mut by_preconditions: Vec<(Vec<(u32, u32)>, u32)> = task
+            .operators
+            .iter()
+            .enumerate()
+            .map(|(o, op)| {
+                let mut pre: Vec<(u32, u32)> = op
+                    .preconditions
+                    .iter()
+                    .map(|f| (f.var.0, f.value))
+                    .collect();
+                pre.sort_unstable();
+                (pre, o as u32)
+            })
+            .collect();
+        by_preconditions.sort_unstable();
+        let mut fd_rank = vec![0u32; task.operators.len()];
+        for (rank, (_, o)) in by_preconditions.iter().enumerate() {
+            fd_rank[*o as usize] = rank as u32;
+        }
         let mut walker = Walker {
+            fd_rank,
+            chooser: Vec::new(),
             fact_offset,
             pre_of_start,
             pre_of: pairs.into_iter().map(|(_, o)| o).collect(),
@@ -866,46 +909,20 @@ impl Walker {
         &self.applicable
     }
 
+    /// The `k`-th applicable operator (from 0) in the order of Fast Downward's successor
+    /// generator; O(applicable operators).
+    fn kth_in_fast_downward_order(&mut self, k: usize) -> OpId {
+        self.chooser.clear();
+        self.chooser.extend_from_slice(&self.applicable);
+        let rank = &self.fd_rank;
+        *self
+            .chooser
+            .select_nth_unstable_by_key(k, |o| rank[o.index()])
+            .1
+    }
+
     fn state(&self) -> &[u32] {
         &self.state
-    }
-}
-
-/// SplitMix64 (Steele, Lea and Flood 2014): small, fast, and good enough for walks.
-#[derive(Debug, Clone)]
-struct Rng(u64);
-
-impl Rng {
-    fn new(seed: u64) -> Rng {
-        Rng(seed)
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `0..n` (`n > 0`), by Lemire's multiply-shift.
-    fn below(&mut self, n: usize) -> usize {
-        ((u128::from(self.next_u64()) * n as u128) >> 64) as usize
-    }
-
-    /// A draw from the binomial distribution with `n` trials of probability 1/2: the
-    /// number of ones among `n` random bits.
-    fn binomial_half(&mut self, n: u64) -> u64 {
-        let mut ones = 0;
-        let mut left = n;
-        while left >= 64 {
-            ones += u64::from(self.next_u64().count_ones());
-            left -= 64;
-        }
-        if left > 0 {
-            ones += u64::from((self.next_u64() & ((1u64 << left) - 1)).count_ones());
-        }
-        ones
     }
 }
 
@@ -1041,7 +1058,10 @@ mod tests {
         let shown = ipdb(&task, &config, &SearchLimits::default()).unwrap();
         let text = shown.statistics().to_string();
         assert!(
-            text.starts_with("Hill climbing iterations: 2\nHill climbing generated patterns: 1\n"),
+            text.starts_with(
+                "found a better pattern with improvement 1000\n\
+                 Hill climbing iterations: 2\nHill climbing generated patterns: 1\n"
+            ),
             "{text}"
         );
         assert!(
@@ -1172,6 +1192,22 @@ mod tests {
                     .map(|o| OpId(o as u32))
                     .collect();
                 assert_eq!(got, expected, "round {round} step {step}");
+                // Fast Downward's successor generator order: sorted preconditions, then
+                // index.
+                let key = |o: &OpId| {
+                    let mut pre: Vec<(u32, u32)> = task.operators[o.index()]
+                        .preconditions
+                        .iter()
+                        .map(|f| (f.var.0, f.value))
+                        .collect();
+                    pre.sort_unstable();
+                    (pre, o.0)
+                };
+                let mut in_fd_order = expected.clone();
+                in_fd_order.sort_by_key(key);
+                for (k, &op) in in_fd_order.iter().enumerate() {
+                    assert_eq!(walker.kth_in_fast_downward_order(k), op, "round {round}");
+                }
                 if step % 13 == 12 || got.is_empty() {
                     let target: Vec<u32> = task
                         .variables
@@ -1191,21 +1227,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn random_numbers() {
-        let mut rng = Rng::new(42);
-        let draws: Vec<u64> = (0..2000).map(|_| rng.binomial_half(100)).collect();
-        assert!(draws.iter().all(|&d| d <= 100));
-        let mean = draws.iter().sum::<u64>() as f64 / draws.len() as f64;
-        assert!((45.0..55.0).contains(&mean), "{mean}");
-        assert_eq!(rng.binomial_half(0), 0);
-        assert!((0..1000).all(|_| rng.below(7) < 7));
-        // Fixed seeds give fixed sequences.
-        let a: Vec<u64> = (0..5).map(|_| Rng::new(1).next_u64()).collect();
-        assert!(a.windows(2).all(|w| w[0] == w[1]));
-        let mut b = Rng::new(1);
-        assert_ne!(b.next_u64(), b.next_u64());
     }
 }

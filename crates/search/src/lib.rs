@@ -60,6 +60,7 @@
 mod astar;
 mod config;
 mod cpdbs;
+mod fd_random;
 mod heuristic;
 mod hmax;
 mod ipdb;
@@ -80,7 +81,7 @@ pub use config::{
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
-pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig};
+pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig, DEFAULT_SEED};
 pub use lmcut::{tie_breaking_order, LmCut, SupporterRule};
 pub use pdb::{PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};

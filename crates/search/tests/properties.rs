@@ -391,7 +391,7 @@ fn check_admissible<H: Heuristic + ?Sized>(
 }
 
 /// Small hill-climbing options for tiny tasks.
-fn small_ipdb(seed: u64) -> IpdbConfig {
+fn small_ipdb(seed: u32) -> IpdbConfig {
     IpdbConfig {
         pdb_max_size: 48,
         collection_max_size: 200,
@@ -614,7 +614,7 @@ proptest! {
     }
 
     #[test]
-    fn ipdb_is_admissible_deterministic_and_astar_with_it_optimal(task in tasks(), seed in 0u64..4) {
+    fn ipdb_is_admissible_deterministic_and_astar_with_it_optimal(task in tasks(), seed in 0u32..4) {
         let space = Space::new(&task);
         let h_star = space.h_star(&task);
         let config = small_ipdb(seed);

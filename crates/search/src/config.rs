@@ -1099,6 +1099,11 @@ mod tests {
             err("astar(ipdb(random_seed=-2))"),
             "`ipdb`: `-2` is not a non-negative integer"
         );
+        // Fast Downward's seeds are C++ ints.
+        assert_eq!(
+            err("astar(ipdb(random_seed=2147483648))"),
+            "`ipdb`: `random_seed` must be -1 or at most 2147483647"
+        );
         assert_eq!(
             err("astar(ipdb(foo=1))"),
             "`ipdb` does not take the argument `foo=`"

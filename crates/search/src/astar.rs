@@ -620,13 +620,7 @@ mod tests {
     fn goal_in_the_initial_state() {
         let mut task = line(3);
         task.initial_state = vec![2];
-        let result = astar(
-            &task,
-            &mut Blind::new(&task),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap();
+        let result = blind_search(&task).unwrap();
         assert_eq!(
             result.outcome,
             Outcome::Solved(Plan {
@@ -643,13 +637,7 @@ mod tests {
         // Only forward moves up to position 2, goal 3: the space is exhausted.
         let mut task = line(4);
         task.operators.retain(|op| op.name != "move p2 p3");
-        let result = astar(
-            &task,
-            &mut Blind::new(&task),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap();
+        let result = blind_search(&task).unwrap();
         assert_eq!(result.outcome, Outcome::Unsolvable);
         assert_eq!(result.statistics.expanded, 3);
         // h^max sees it at once: the initial state is a dead end.
@@ -822,6 +810,11 @@ mod tests {
         assert_eq!(state, vec![1, 0, 0, 0, 0]);
     }
 
+    /// A* with the blind heuristic and no limits.
+    fn blind_search(task: &Task) -> Result<SearchResult, SearchError> {
+        astar(task, &mut Blind::new(task), &SearchLimits::default(), None)
+    }
+
     /// `line(n)` with every move costing `cost`.
     fn costly_line(n: u32, cost: u64) -> Task {
         let mut task = line(n);
@@ -835,13 +828,7 @@ mod tests {
     #[test]
     fn path_costs_up_to_32_bits_are_exact() {
         let task = costly_line(3, u64::from(u32::MAX / 2));
-        let result = astar(
-            &task,
-            &mut Blind::new(&task),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap();
+        let result = blind_search(&task).unwrap();
         let Outcome::Solved(plan) = result.outcome else {
             panic!("solvable")
         };
@@ -851,13 +838,7 @@ mod tests {
     #[test]
     fn a_path_costing_more_than_32_bits_is_an_error_not_a_wrap() {
         let task = costly_line(3, 3_000_000_000);
-        let err = astar(
-            &task,
-            &mut Blind::new(&task),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap_err();
+        let err = blind_search(&task).unwrap_err();
         assert_eq!(
             err,
             SearchError::CostTooLarge {

@@ -361,8 +361,11 @@ impl<'t> Climb<'t> {
                 return ClimbEnd::InitialDeadEnd;
             };
             let t = Instant::now();
-            self.sample(initial_h);
+            let sampled = self.sample(initial_h);
             self.stats.sampling_time += t.elapsed();
+            if let Some(end) = sampled {
+                return end;
+            }
             let t = Instant::now();
             let best = self.best_candidate();
             self.stats.evaluation_time += t.elapsed();
@@ -491,8 +494,10 @@ impl<'t> Climb<'t> {
             .any(|p| p.has_dead_ends() && p.raw(state) == DEAD)
     }
 
-    /// Samples states by random walks (see the module documentation) into `samples`.
-    fn sample(&mut self, initial_h: u64) {
+    /// Samples states by random walks (see the module documentation) into `samples`;
+    /// stops early, returning why, if the deadline passes (checked after every sample,
+    /// as Fast Downward checks its climb's timer: long walks can take seconds).
+    fn sample(&mut self, initial_h: u64) -> Option<ClimbEnd> {
         // The number of coin flips of the binomial distribution: four times the
         // estimated number of steps, or 10 if h is 0 (then the average cost need not
         // be positive); capped far beyond any walk that could finish in reasonable time.
@@ -525,6 +530,9 @@ impl<'t> Climb<'t> {
                 }
             }
             self.samples.extend_from_slice(self.walker.state());
+            if self.deadline.is_some_and(|d| Instant::now() >= d) {
+                return Some(ClimbEnd::TimeLimit);
+            }
         }
         // The collection's values on the samples, pattern by pattern (dead ends as 0:
         // those samples are not compared), and the canonical value of each sample.
@@ -563,6 +571,7 @@ impl<'t> Climb<'t> {
                 *current = Some(value);
             }
         }
+        None
     }
 
     /// The first candidate improving the most samples, with that number; rejects the
@@ -1100,6 +1109,46 @@ mod tests {
         if past.is_some() {
             assert_eq!(climb_deadline(start, None, past), past);
         }
+    }
+
+    /// On a long line the walks are long (the binomial has 4 * 199,999 trials), so one
+    /// iteration's 1,000 samples take many seconds; the climb must still stop at
+    /// `max_time`, checked after every sample.
+    #[test]
+    fn sampling_stops_at_the_deadline() {
+        let n = 200_000u32;
+        let task = Task {
+            variables: vec![Variable {
+                name: "at".into(),
+                value_names: (0..n).map(|i| format!("p{i}")).collect(),
+            }],
+            mutexes: vec![],
+            initial_state: vec![0],
+            goal: vec![Fact::new(VarId(0), n - 1)],
+            operators: (1..n)
+                .flat_map(|i| {
+                    [
+                        op(&format!("r{i}"), &[(0, i - 1)], &[(0, i)], 1),
+                        op(&format!("l{i}"), &[(0, i)], &[(0, i - 1)], 1),
+                    ]
+                })
+                .collect(),
+            use_costs: false,
+        };
+        let config = IpdbConfig {
+            max_time: Some(Duration::from_secs(1)),
+            ..IpdbConfig::default()
+        };
+        let start = Instant::now();
+        let h = ipdb(&task, &config, &SearchLimits::default()).unwrap();
+        let climb = h.statistics().hill_climbing.clone().unwrap();
+        // The deadline passed while sampling, not before.
+        assert_eq!((climb.end, climb.iterations), (ClimbEnd::TimeLimit, 1));
+        assert!(
+            start.elapsed() < Duration::from_secs(4),
+            "{:?}",
+            start.elapsed()
+        );
     }
 
     /// `count_improvements` against its definition, on random cliques and values.

@@ -534,14 +534,14 @@ fn check_limits(limits: &SearchLimits, own_bytes: impl FnOnce() -> usize) -> Opt
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::heuristic::Blind;
     use crate::hmax::HMax;
     use task::{Fact, Operator, VarId, Variable};
 
     /// A robot on a line of `n` positions, starting at 0, with the goal at `n - 1`.
-    fn line(n: u32) -> Task {
+    pub(crate) fn line(n: u32) -> Task {
         let step = |from: u32, to: u32| Operator {
             name: format!("move p{from} p{to}"),
             preconditions: vec![Fact::new(VarId(0), from)],

@@ -1116,25 +1116,7 @@ mod tests {
     /// `max_time`, checked after every sample.
     #[test]
     fn sampling_stops_at_the_deadline() {
-        let n = 200_000u32;
-        let task = Task {
-            variables: vec![Variable {
-                name: "at".into(),
-                value_names: (0..n).map(|i| format!("p{i}")).collect(),
-            }],
-            mutexes: vec![],
-            initial_state: vec![0],
-            goal: vec![Fact::new(VarId(0), n - 1)],
-            operators: (1..n)
-                .flat_map(|i| {
-                    [
-                        op(&format!("r{i}"), &[(0, i - 1)], &[(0, i)], 1),
-                        op(&format!("l{i}"), &[(0, i)], &[(0, i - 1)], 1),
-                    ]
-                })
-                .collect(),
-            use_costs: false,
-        };
+        let task = crate::astar::tests::line(200_000);
         let config = IpdbConfig {
             max_time: Some(Duration::from_secs(1)),
             ..IpdbConfig::default()

@@ -253,10 +253,12 @@ const STATUS_SHIFT: u32 = 30;
 const _: () = assert!(std::mem::size_of::<Node>() == 16);
 
 impl Node {
-    fn new(g: u32, h: u64, parent: StateId, creating_op: OpId, status: Status) -> Node {
+    /// A node; `h` must be clamped already ([`clamp_h`]).
+    fn new(g: u32, h: u32, parent: StateId, creating_op: OpId, status: Status) -> Node {
+        debug_assert!(h <= H_MAX);
         Node {
             g,
-            h_and_status: (status as u32) << STATUS_SHIFT | clamp_h(h),
+            h_and_status: (status as u32) << STATUS_SHIFT | h,
             parent,
             creating_op,
         }
@@ -302,7 +304,7 @@ struct StateInfo {
 }
 
 impl StateInfo {
-    fn push(&mut self, g: u32, h: u64, parent: StateId, creating_op: OpId, status: Status) {
+    fn push(&mut self, g: u32, h: u32, parent: StateId, creating_op: OpId, status: Status) {
         self.nodes
             .push(Node::new(g, h, parent, creating_op, status));
     }
@@ -404,9 +406,9 @@ pub fn astar<H: Heuristic + ?Sized>(
             return finish(Outcome::Unsolvable, stats, &registry);
         }
         Some(h) => {
-            let h = u64::from(clamp_h(h));
+            let h = clamp_h(h);
             info.push(0, h, init, NO_OP, Status::Open);
-            open.push(h, h, init);
+            open.push(u64::from(h), u64::from(h), init);
         }
     }
 
@@ -474,8 +476,9 @@ pub fn astar<H: Heuristic + ?Sized>(
                         info.push(child_g, 0, id, op, Status::DeadEnd);
                     }
                     Some(child_h) => {
-                        let child_h = u64::from(clamp_h(child_h));
+                        let child_h = clamp_h(child_h);
                         info.push(child_g, child_h, id, op, Status::Open);
+                        let child_h = u64::from(child_h);
                         open.push(u64::from(child_g) + child_h, child_h, child_id);
                     }
                 }
@@ -850,7 +853,7 @@ pub(crate) mod tests {
 
     #[test]
     fn node_keeps_status_and_saturated_h_apart() {
-        let mut node = Node::new(7, u64::MAX, StateId(3), OpId(4), Status::Closed);
+        let mut node = Node::new(7, clamp_h(u64::MAX), StateId(3), OpId(4), Status::Closed);
         assert_eq!(
             (node.g, node.h(), node.status()),
             (7, u64::from(H_MAX), Status::Closed)

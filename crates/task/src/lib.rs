@@ -26,6 +26,7 @@
 //! # Ok::<(), task::TaskError>(())
 //! ```
 
+pub mod mersenne_twister;
 pub mod sas_file;
 
 use std::fmt;

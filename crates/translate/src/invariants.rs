@@ -1,311 +1,834 @@
-//! Invariant synthesis: lifted mutex groups, checked against the ground actions.
+//! Invariant synthesis: lifted mutex groups, proved on the action schemas as Fast
+//! Downward's translator proves them.
 //!
-//! An invariant candidate is a set of *parts*, each a predicate with some argument
-//! positions bound to the invariant's parameters and at most one position counted. It
+//! An invariant candidate is a set of *parts*, one per predicate, each naming for every
+//! argument position either an invariant parameter or the one *counted* position. It
 //! claims: for every binding of the parameters, at most one matching atom is true. This is
-//! the candidate space of Helmert's invariant synthesis ("Concise finite-domain
-//! representations for PDDL planning tasks", AIJ 2009); unlike that algorithm, which proves
-//! candidates on the lifted schemas, this module checks them on the reachable ground
-//! actions, which is exact for the task at hand and needs no unification:
+//! Helmert's invariant synthesis ("Concise finite-domain representations for PDDL
+//! planning tasks", AIJ 2009): a candidate is proved when no action can make two of its
+//! atoms true at once (*too heavy*) and every add effect it covers is *balanced*, in every
+//! instantiation of the schema, by a delete effect on an atom the precondition requires.
+//! An unbalanced add effect refines the candidate: each delete effect of that action on a
+//! predicate the candidate lacks suggests a part that would balance it, and the refined
+//! candidates join a breadth-first queue.
 //!
-//! - the initial state has at most one true atom per parameter binding;
-//! - every ground action that adds an atom of a group either requires that atom already,
-//!   or deletes another atom of the same group that its precondition requires, and it
-//!   never adds two atoms of one group;
-//! - except actions whose precondition holds two atoms of one group: in a state where
-//!   the candidate holds they never apply (by induction over the reachable states), and
-//!   relaxed grounding does keep such actions.
+//! The proof reasons about instantiations with a small constraint system over equalities
+//! and inequalities of action parameters, invariant parameters and objects
+//! ([`Constraints`]). It ignores static facts, so it proves less than a check on the
+//! reachable ground actions would: in pipesworld's net2 instances, for example, it cannot
+//! prove "where is batch b". That weakness is Fast Downward's too, and this module keeps
+//! it on purpose: the variables of the finite-domain task, and through them LM-cut's tie
+//! breaking and iPDB's climbs, are Fast Downward's only if the mutex groups are. For the
+//! same reason it follows Fast Downward 26.6 in its details:
 //!
-//! A candidate that fails the second test on some action is refined by adding a part for
-//! a required-and-deleted atom of that action that would balance the add; refinement is a
-//! breadth-first search over candidates, bounded by [`MAX_CANDIDATES`].
+//! - a pair of parameters that no reachable ground action instantiates with one object
+//!   gets an inequality precondition (here from the ground actions, where Fast Downward
+//!   uses its relaxed exploration's parameter tuples, which may hold a few more);
+//! - the actions threatening a candidate are checked in the random order Fast Downward's
+//!   translator draws, from Python's Mersenne Twister seeded with 314159 ([`PythonRandom`]);
+//!   the first failing action decides the refinements, so the order matters;
+//! - at most [`MAX_CANDIDATES`] candidates are ever queued;
+//! - a proved invariant yields a mutex group for each parameter binding with exactly one
+//!   atom true initially (none, or two and more, and the binding yields no group).
 //!
-//! Complexity: per candidate, linear in the effects of the actions that add one of its
-//! predicates.
+//! Complexity: per candidate and threatening action, the constraint systems are solved by
+//! enumerating their disjunctions, which stay small (one per precondition atom of the
+//! deleted predicate).
 
 use std::collections::VecDeque;
 
 use rustc_hash::{FxHashMap, FxHashSet};
+use task::mersenne_twister::MersenneTwister;
 
 use crate::ground::{AtomId, Grounding};
-use crate::model::{Model, PredId};
+use crate::model::{Arg, Model, Pattern, PredId};
 
-/// Candidates examined at most; past that, the invariants found so far are used.
-pub(crate) const MAX_CANDIDATES: usize = 5_000;
+/// Candidates ever queued, as Fast Downward's `--invariant-generation-max-candidates`.
+pub(crate) const MAX_CANDIDATES: usize = 100_000;
 
-/// A predicate in an invariant: `fixed[j]` is the argument position of invariant
-/// parameter `j`; the one remaining position, if any, is counted.
-#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
-struct Part {
-    pred: PredId,
-    fixed: Vec<u8>,
+/// The seed of Fast Downward's translator for the order of its balance checks.
+const FAST_DOWNWARD_INVARIANT_SEED: u32 = 314_159;
+
+/// The counted position of a part.
+const COUNTED: i8 = -1;
+
+/// A ground mutex group: atoms of which at most one is true in any reachable state.
+pub(crate) type Group = Vec<AtomId>;
+
+/// A term of a constraint: an invariant parameter, an action parameter or an object.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum Term {
+    Invariant(i8),
+    Param(u32),
+    Object(u32),
 }
 
+fn term(arg: Arg) -> Term {
+    match arg {
+        Arg::Param(p) => Term::Param(p),
+        Arg::Obj(o) => Term::Object(o.0),
+    }
+}
+
+/// A lifted atom with terms.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+struct Atom {
+    pred: PredId,
+    args: Vec<Term>,
+}
+
+fn atom(p: &Pattern) -> Atom {
+    Atom {
+        pred: p.pred,
+        args: p.args.iter().map(|&a| term(a)).collect(),
+    }
+}
+
+/// The pairs of two atoms' arguments position by position.
+fn zipped(a: &[Term], b: &[Term]) -> Vec<(Term, Term)> {
+    a.iter().copied().zip(b.iter().copied()).collect()
+}
+
+/// An action schema as the synthesis sees it: Fast Downward's normalised action.
+#[derive(Debug)]
+struct LiftedAction {
+    params: u32,
+    positive: Vec<Atom>,
+    negative: Vec<Atom>,
+    equal: Vec<(Term, Term)>,
+    /// Inequality preconditions, written and inferred from the reachable actions.
+    unequal: Vec<(Term, Term)>,
+    /// Add and delete effects in the schema's order; a delete of an atom the schema also
+    /// adds is dropped (add after delete).
+    adds: Vec<Atom>,
+    dels: Vec<Atom>,
+}
+
+fn lifted_actions(model: &Model, g: &Grounding) -> Vec<LiftedAction> {
+    // Per schema, the parameter pairs some reachable ground action binds to one object.
+    let mut may_coincide: Vec<FxHashSet<(u32, u32)>> =
+        vec![FxHashSet::default(); model.schemas.len()];
+    for action in &g.actions {
+        let pairs = &mut may_coincide[action.schema as usize];
+        for (i, a) in action.args.iter().enumerate() {
+            for (j, b) in action.args.iter().enumerate().skip(i + 1) {
+                if a == b {
+                    pairs.insert((i as u32, j as u32));
+                }
+            }
+        }
+    }
+    model
+        .schemas
+        .iter()
+        .zip(&may_coincide)
+        .map(|(s, coincide)| {
+            let params = s.domains.len() as u32;
+            let mut equal = Vec::new();
+            let mut unequal = Vec::new();
+            for &(x, y, positive) in &s.equalities {
+                if positive {
+                    equal.push((term(x), term(y)));
+                } else {
+                    unequal.push((term(x), term(y)));
+                }
+            }
+            if params >= 2 {
+                for i in 0..params {
+                    for j in i + 1..params {
+                        if !coincide.contains(&(i, j)) {
+                            unequal.push((Term::Param(i), Term::Param(j)));
+                        }
+                    }
+                }
+            }
+            let adds: Vec<Atom> = s.add.iter().map(atom).collect();
+            let dels = s
+                .delete
+                .iter()
+                .map(atom)
+                .filter(|d| !adds.contains(d))
+                .collect();
+            LiftedAction {
+                params,
+                positive: s.positive.iter().map(atom).collect(),
+                negative: s.negative.iter().map(atom).collect(),
+                equal,
+                unequal,
+                adds,
+                dels,
+            }
+        })
+        .collect()
+}
+
+/// A conjunction over equalities and inequalities of terms (Fast Downward's
+/// `ConstraintSystem`). It is solvable if one conjunction can be picked from every
+/// choice such that, in the finest equivalence relation their equalities induce, no
+/// class holds two objects, no term of `not_objects` is in a class with an object, and
+/// every inequality clause has a pair in different classes.
+#[derive(Debug, Clone, Default)]
+struct Constraints {
+    /// Each entry: one of these conjunctions of equalities holds.
+    equality_choices: Vec<Vec<Vec<(Term, Term)>>>,
+    /// Each entry: at least one of these pairs differs.
+    inequality_clauses: Vec<Vec<(Term, Term)>>,
+    /// Terms that stand for no particular object.
+    not_objects: Vec<Term>,
+}
+
+impl Constraints {
+    fn require_equal(&mut self, equalities: Vec<(Term, Term)>) {
+        self.equality_choices.push(vec![equalities]);
+    }
+
+    /// Some pair differs; an empty clause (two 0-ary atoms) is left out, as Fast Downward
+    /// leaves it out.
+    fn require_some_differ(&mut self, pairs: Vec<(Term, Term)>) {
+        if !pairs.is_empty() {
+            self.inequality_clauses.push(pairs);
+        }
+    }
+
+    fn extend(&mut self, other: &Constraints) {
+        self.equality_choices
+            .extend(other.equality_choices.iter().cloned());
+        self.inequality_clauses
+            .extend(other.inequality_clauses.iter().cloned());
+        self.not_objects.extend(other.not_objects.iter().copied());
+    }
+
+    fn solvable(&self) -> bool {
+        if self.equality_choices.iter().any(Vec::is_empty) {
+            return false;
+        }
+        let mut picked = vec![0usize; self.equality_choices.len()];
+        loop {
+            let mut classes = Partition::default();
+            for (choice, &k) in self.equality_choices.iter().zip(&picked) {
+                for &(a, b) in &choice[k] {
+                    classes.union(a, b);
+                }
+            }
+            if classes.consistent()
+                && !self.not_objects.iter().any(|&t| classes.has_object(t))
+                && self
+                    .inequality_clauses
+                    .iter()
+                    .all(|clause| clause.iter().any(|&(a, b)| !classes.same(a, b)))
+            {
+                return true;
+            }
+            // The next combination, the last choice fastest.
+            let mut i = picked.len();
+            loop {
+                if i == 0 {
+                    return false;
+                }
+                i -= 1;
+                picked[i] += 1;
+                if picked[i] < self.equality_choices[i].len() {
+                    break;
+                }
+                picked[i] = 0;
+            }
+        }
+    }
+}
+
+/// Equivalence classes of the few terms of one constraint system (union-find on a list).
+#[derive(Debug, Default)]
+struct Partition {
+    terms: Vec<Term>,
+    parent: Vec<usize>,
+}
+
+impl Partition {
+    fn index(&mut self, t: Term) -> usize {
+        match self.terms.iter().position(|&x| x == t) {
+            Some(i) => i,
+            None => {
+                self.terms.push(t);
+                self.parent.push(self.parent.len());
+                self.terms.len() - 1
+            }
+        }
+    }
+
+    fn root(&self, mut i: usize) -> usize {
+        while self.parent[i] != i {
+            i = self.parent[i];
+        }
+        i
+    }
+
+    fn union(&mut self, a: Term, b: Term) {
+        let (ia, ib) = (self.index(a), self.index(b));
+        let (ra, rb) = (self.root(ia), self.root(ib));
+        if ra != rb {
+            self.parent[ra] = rb;
+        }
+    }
+
+    fn class_of(&self, t: Term) -> Option<usize> {
+        self.terms
+            .iter()
+            .position(|&x| x == t)
+            .map(|i| self.root(i))
+    }
+
+    fn same(&self, a: Term, b: Term) -> bool {
+        a == b || matches!((self.class_of(a), self.class_of(b)), (Some(x), Some(y)) if x == y)
+    }
+
+    /// The object of each class, if any; `None` if a class holds two objects.
+    fn objects(&self) -> Option<Vec<Option<u32>>> {
+        let mut object = vec![None; self.terms.len()];
+        for (i, &t) in self.terms.iter().enumerate() {
+            if let Term::Object(o) = t {
+                let r = self.root(i);
+                match object[r] {
+                    Some(other) if other != o => return None,
+                    _ => object[r] = Some(o),
+                }
+            }
+        }
+        Some(object)
+    }
+
+    fn consistent(&self) -> bool {
+        self.objects().is_some()
+    }
+
+    fn has_object(&self, t: Term) -> bool {
+        if matches!(t, Term::Object(_)) {
+            return true;
+        }
+        let Some(class) = self.class_of(t) else {
+            return false;
+        };
+        self.terms
+            .iter()
+            .enumerate()
+            .any(|(i, x)| matches!(x, Term::Object(_)) && self.root(i) == class)
+    }
+}
+
+/// A predicate in a candidate: `args[pos]` is the invariant parameter at `pos`, or
+/// [`COUNTED`]. Parts order as Fast Downward sorts them, by predicate name, then
+/// arguments (`rank` is the name's rank).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+struct Part {
+    rank: u32,
+    pred: PredId,
+    args: Vec<i8>,
+}
+
+impl Part {
+    fn arity(&self) -> usize {
+        self.args.iter().filter(|&&a| a != COUNTED).count()
+    }
+
+    /// The equalities making the invariant parameters the atom's arguments.
+    fn cover(&self, args: &[Term]) -> Vec<(Term, Term)> {
+        self.args
+            .iter()
+            .zip(args)
+            .filter(|(&a, _)| a != COUNTED)
+            .map(|(&a, &t)| (Term::Invariant(a), t))
+            .collect()
+    }
+
+    /// The parts for `other` (a deleted atom of a predicate the candidate lacks) whose
+    /// invariant parameters take the values they take in `own` (this part's added atom):
+    /// every position of `other` gets the parameter whose value it holds, one position may
+    /// stay counted. Several positions with one value give one part per permutation, in
+    /// Fast Downward's order.
+    fn balancing_parts(&self, own: &[Term], other: &Atom, rank: u32) -> Vec<Part> {
+        let mut omissions_left = match other.args.len().checked_sub(self.arity()) {
+            Some(n @ (0 | 1)) => n,
+            _ => return Vec::new(),
+        };
+        // The invariant parameters by value, in the order of their positions in `own`.
+        let mut params_of: Vec<(Term, Vec<i8>)> = Vec::new();
+        for (&a, &t) in self.args.iter().zip(own) {
+            if a == COUNTED {
+                continue;
+            }
+            match params_of.iter_mut().find(|(x, _)| *x == t) {
+                Some((_, params)) => params.push(a),
+                None => params_of.push((t, vec![a])),
+            }
+        }
+        // Per value of `other`, in order of first occurrence: its positions and the
+        // parameters (or the counted position) they may take.
+        let mut factors: Vec<(Vec<usize>, Vec<i8>)> = Vec::new();
+        for (pos, &t) in other.args.iter().enumerate() {
+            match factors
+                .iter_mut()
+                .find(|(positions, _)| other.args[positions[0]] == t)
+            {
+                Some((positions, _)) => positions.push(pos),
+                None => factors.push((vec![pos], Vec::new())),
+            }
+        }
+        for (positions, params) in &mut factors {
+            let t = other.args[positions[0]];
+            *params = params_of
+                .iter()
+                .find(|(x, _)| *x == t)
+                .map(|(_, p)| p.clone())
+                .unwrap_or_default();
+            match params.len() as isize - positions.len() as isize {
+                0 => {}
+                -1 if omissions_left == 1 => {
+                    params.push(COUNTED);
+                    omissions_left = 0;
+                }
+                _ => return Vec::new(),
+            }
+        }
+        let mut out = Vec::new();
+        let mut args = vec![COUNTED; other.args.len()];
+        assign_factors(&factors, 0, &mut args, &mut |args| {
+            out.push(Part {
+                rank,
+                pred: other.pred,
+                args: args.to_vec(),
+            })
+        });
+        out
+    }
+}
+
+/// Every way to give each factor's positions a permutation of its parameters: factors
+/// in order, the first varying slowest, permutations in lexicographic order of indices
+/// (Python's `itertools.product` over `itertools.permutations`).
+fn assign_factors(
+    factors: &[(Vec<usize>, Vec<i8>)],
+    k: usize,
+    args: &mut [i8],
+    emit: &mut dyn FnMut(&[i8]),
+) {
+    let Some((positions, params)) = factors.get(k) else {
+        emit(args);
+        return;
+    };
+    fn permute(
+        positions: &[usize],
+        remaining: &mut Vec<i8>,
+        depth: usize,
+        args: &mut [i8],
+        then: &mut dyn FnMut(&mut [i8]),
+    ) {
+        if depth == positions.len() {
+            then(args);
+            return;
+        }
+        for i in 0..remaining.len() {
+            let p = remaining.remove(i);
+            args[positions[depth]] = p;
+            permute(positions, remaining, depth + 1, args, then);
+            remaining.insert(i, p);
+        }
+    }
+    let mut remaining = params.clone();
+    permute(positions, &mut remaining, 0, args, &mut |args| {
+        assign_factors(factors, k + 1, args, emit)
+    });
+}
+
+/// An invariant candidate: its parts in Fast Downward's sorted order.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 struct Candidate {
     parts: Vec<Part>,
 }
 
-/// A ground mutex group: atoms of which at most one is true in any reachable state.
-pub(crate) type Group = Vec<AtomId>;
+impl Candidate {
+    fn part(&self, pred: PredId) -> Option<&Part> {
+        self.parts.iter().find(|p| p.pred == pred)
+    }
 
-struct Checker<'g> {
-    g: &'g Grounding,
-    /// Actions by the predicates they add.
-    adders: Vec<Vec<u32>>,
-    /// Whether an action's required atom is in its precondition: `pre` is sorted.
-    stamp: Vec<u32>,
-    round: u32,
-}
+    fn with(&self, part: Part) -> Candidate {
+        let mut parts = self.parts.clone();
+        parts.push(part);
+        parts.sort_unstable();
+        Candidate { parts }
+    }
 
-fn key_of(g: &Grounding, part: &Part, atom: AtomId) -> Vec<u32> {
-    let args = g.atoms.args(atom);
-    part.fixed.iter().map(|&p| args[p as usize]).collect()
-}
-
-/// The parts of `c` that match `atom`'s predicate.
-fn parts_for<'c>(c: &'c Candidate, g: &Grounding, atom: AtomId) -> impl Iterator<Item = &'c Part> {
-    let pred = g.atoms.pred(atom);
-    c.parts.iter().filter(move |p| p.pred == pred)
-}
-
-enum Verdict {
-    Invariant,
-    /// Unbalanced add: the action, and the group key that grew.
-    Unbalanced {
-        action: u32,
-        key: Vec<u32>,
-    },
-    Invalid,
-}
-
-impl Checker<'_> {
-    fn check(&mut self, c: &Candidate) -> Verdict {
-        let g = self.g;
-        // Initial state: at most one atom per key.
-        let mut keys: FxHashMap<Vec<u32>, AtomId> = FxHashMap::default();
-        for &a in &g.init {
-            for part in parts_for(c, g, a) {
-                if *keys.entry(key_of(g, part, a)).or_insert(a) != a {
-                    return Verdict::Invalid;
-                }
-            }
-        }
-        self.round += 1;
-        let preds: FxHashSet<PredId> = c.parts.iter().map(|p| p.pred).collect();
-        let mut preds: Vec<PredId> = preds.into_iter().collect();
-        preds.sort_unstable();
-        for pred in preds {
-            for &act in &self.adders[pred.0 as usize] {
-                if self.stamp[act as usize] == self.round {
-                    continue;
-                }
-                self.stamp[act as usize] = self.round;
-                let action = &g.actions[act as usize];
-                if requires_two_of_a_group(g, c, &action.pre) {
-                    // Never applicable in a state where the candidate holds: by
-                    // induction over reachable states it cannot break the candidate.
-                    continue;
-                }
-                let mut added: Vec<(Vec<u32>, AtomId)> = Vec::new();
-                for &a in &action.add {
-                    for part in parts_for(c, g, a) {
-                        added.push((key_of(g, part, a), a));
-                    }
-                }
-                added.sort_unstable();
-                added.dedup();
-                for w in added.windows(2) {
-                    if w[0].0 == w[1].0 {
-                        return Verdict::Invalid; // two atoms of one group become true
-                    }
-                }
-                for (key, a) in added {
-                    if action.pre.binary_search(&a).is_ok() {
-                        continue;
-                    }
-                    let balanced = action.del.iter().any(|&d| {
-                        d != a
-                            && action.pre.binary_search(&d).is_ok()
-                            && parts_for(c, g, d).any(|part| key_of(g, part, d) == key)
-                    });
-                    if !balanced {
-                        return Verdict::Unbalanced { action: act, key };
-                    }
-                }
-            }
-        }
-        Verdict::Invariant
+    fn arity(&self) -> usize {
+        self.parts[0].arity()
     }
 }
 
-/// Whether the precondition holds two different atoms of one group of `c` (same key).
-/// Grounding is relaxed, so it keeps actions such as freecell's move of a card onto the
-/// card it already stands on (`on(c, a)` and `clear(a)` required, both in the group
-/// "what is on a"); in a state where the candidate holds, such an action never applies.
-fn requires_two_of_a_group(g: &Grounding, c: &Candidate, pre: &[AtomId]) -> bool {
-    // Most actions require at most one atom of a candidate: decide those without
-    // allocating the keys (this runs per action and candidate).
-    if pre
+/// Python's `random.Random`: `randrange(n)` as CPython's `_randbelow_with_getrandbits`.
+struct PythonRandom(MersenneTwister);
+
+impl PythonRandom {
+    /// `random.Random(seed)` for a seed below 2^32.
+    fn new(seed: u32) -> PythonRandom {
+        PythonRandom(MersenneTwister::from_key(&[seed]))
+    }
+
+    /// An integer in `[0, n)`, `0 < n < 2^32`: `k`-bit draws (the top bits of one
+    /// output) until one is below `n`, `k` the bit length of `n`.
+    fn randrange(&mut self, n: usize) -> usize {
+        debug_assert!(n > 0 && n <= u32::MAX as usize);
+        let bits = usize::BITS - n.leading_zeros();
+        loop {
+            let r = (self.0.next_u32() >> (32 - bits)) as usize;
+            if r < n {
+                return r;
+            }
+        }
+    }
+}
+
+struct Synthesis {
+    actions: Vec<LiftedAction>,
+    /// Per predicate, the actions that add it, in schema order.
+    threats: Vec<Vec<usize>>,
+    rank: Vec<u32>,
+    random: PythonRandom,
+    queue: VecDeque<Candidate>,
+    seen: FxHashSet<Candidate>,
+}
+
+impl Synthesis {
+    fn enqueue(&mut self, c: Candidate) {
+        if self.seen.len() < MAX_CANDIDATES && !self.seen.contains(&c) {
+            self.seen.insert(c.clone());
+            self.queue.push_back(c);
+        }
+    }
+
+    /// Whether `c` is an invariant; if not, its refinements are queued.
+    fn check(&mut self, c: &Candidate) -> bool {
+        let mut actions: Vec<usize> = Vec::new();
+        for part in &c.parts {
+            for &a in &self.threats[part.pred.0 as usize] {
+                if !actions.contains(&a) {
+                    actions.push(a);
+                }
+            }
+        }
+        while !actions.is_empty() {
+            let pos = self.random.randrange(actions.len());
+            let last = actions.len() - 1;
+            actions.swap(pos, last);
+            let Some(a) = actions.pop() else { break };
+            let action = &self.actions[a];
+            if too_heavy(c, action) {
+                return false;
+            }
+            if let Some(add) = unbalanced_add(c, action) {
+                let refinements = refinements(c, action, add, &self.rank);
+                for r in refinements {
+                    self.enqueue(r);
+                }
+                return false;
+            }
+        }
+        true
+    }
+}
+
+/// Constraints that the action's precondition and the given negated atoms can hold at
+/// once: its (in)equalities, and each positive atom differing from each negative one of
+/// its predicate.
+fn precondition_satisfiable(system: &mut Constraints, action: &LiftedAction, negated: &[&Atom]) {
+    for &(a, b) in &action.equal {
+        system.require_equal(vec![(a, b)]);
+    }
+    for &(a, b) in &action.unequal {
+        system.require_some_differ(vec![(a, b)]);
+    }
+    let mut positive: Vec<&Atom> = Vec::new();
+    for p in &action.positive {
+        if !positive.contains(&p) {
+            positive.push(p);
+        }
+    }
+    let mut negative: Vec<&Atom> = Vec::new();
+    for n in action.negative.iter().chain(negated.iter().copied()) {
+        if !negative.contains(&n) {
+            negative.push(n);
+        }
+    }
+    for p in &positive {
+        for n in negative.iter().filter(|n| n.pred == p.pred) {
+            system.require_some_differ(zipped(&n.args, &p.args));
+        }
+    }
+}
+
+/// Whether one application of `action` can add two atoms of one group of `c`.
+fn too_heavy(c: &Candidate, action: &LiftedAction) -> bool {
+    let adds: Vec<(&Atom, &Part)> = action
+        .adds
         .iter()
-        .filter(|&&a| parts_for(c, g, a).next().is_some())
-        .count()
-        < 2
-    {
-        return false;
-    }
-    let mut keys: Vec<(Vec<u32>, AtomId)> = Vec::new();
-    for &a in pre {
-        for part in parts_for(c, g, a) {
-            keys.push((key_of(g, part, a), a));
-        }
-    }
-    if keys.len() < 2 {
-        return false;
-    }
-    keys.sort_unstable();
-    keys.dedup();
-    keys.windows(2).any(|w| w[0].0 == w[1].0)
-}
-
-/// The parts for `atom` whose key equals `key`: invariant parameter `j` goes to a
-/// position holding `key[j]`, and at most one position is left counted.
-fn balancing_parts(g: &Grounding, atom: AtomId, key: &[u32]) -> Vec<Part> {
-    let args = g.atoms.args(atom);
-    if args.len() != key.len() && args.len() != key.len() + 1 {
-        return Vec::new();
-    }
-    let mut out = Vec::new();
-    let mut fixed = Vec::new();
-    fn assign(
-        args: &[u32],
-        key: &[u32],
-        j: usize,
-        fixed: &mut Vec<u8>,
-        pred: PredId,
-        out: &mut Vec<Part>,
-    ) {
-        if j == key.len() {
-            out.push(Part {
-                pred,
-                fixed: fixed.clone(),
-            });
-            return;
-        }
-        for (pos, &a) in args.iter().enumerate() {
-            if a == key[j] && !fixed.contains(&(pos as u8)) {
-                fixed.push(pos as u8);
-                assign(args, key, j + 1, fixed, pred, out);
-                fixed.pop();
+        .filter_map(|a| c.part(a.pred).map(|p| (a, p)))
+        .collect();
+    for (i, &(e1, p1)) in adds.iter().enumerate() {
+        for &(e2, p2) in &adds[i + 1..] {
+            let mut system = Constraints::default();
+            if e1.pred == e2.pred {
+                system.require_some_differ(zipped(&e1.args, &e2.args));
+            }
+            system.require_equal(p1.cover(&e1.args));
+            system.require_equal(p2.cover(&e2.args));
+            precondition_satisfiable(&mut system, action, &[e1, e2]);
+            if system.solvable() {
+                return true;
             }
         }
     }
-    assign(args, key, 0, &mut fixed, g.atoms.pred(atom), &mut out);
+    false
+}
+
+/// The first add effect of `action` that no delete effect balances in every
+/// instantiation, if any.
+fn unbalanced_add<'a>(c: &Candidate, action: &'a LiftedAction) -> Option<&'a Atom> {
+    let dels: Vec<(&Atom, &Part)> = action
+        .dels
+        .iter()
+        .filter_map(|d| c.part(d.pred).map(|p| (d, p)))
+        .collect();
+    action
+        .adds
+        .iter()
+        .filter_map(|a| c.part(a.pred).map(|p| (a, p)))
+        .find(|&(add, part)| {
+            let add_cover = part.cover(&add.args);
+            // The add threatens the group whatever the action's parameters are, except
+            // as far as covering it forces them: a balance may not assume parameters
+            // equal, or bound to an object, unless the cover makes them so.
+            let mut classes = Partition::default();
+            for &(a, b) in &add_cover {
+                classes.union(a, b);
+            }
+            let mut params_free = Constraints::default();
+            for p in 0..action.params {
+                if !classes.has_object(Term::Param(p)) {
+                    params_free.not_objects.push(Term::Param(p));
+                }
+                for q in p + 1..action.params {
+                    if !classes.same(Term::Param(p), Term::Param(q)) {
+                        params_free.require_some_differ(vec![(Term::Param(p), Term::Param(q))]);
+                    }
+                }
+            }
+            !dels.iter().any(|&(del, del_part)| {
+                balances(action, add, &add_cover, del, del_part, &params_free)
+            })
+        })
+        .map(|(add, _)| add)
+}
+
+/// Whether deleting `del` balances adding `add` in every instantiation that threatens
+/// the group: the precondition requires the deleted atom, it is another atom than the
+/// added one, and both are in the same group.
+fn balances(
+    action: &LiftedAction,
+    add: &Atom,
+    add_cover: &[(Term, Term)],
+    del: &Atom,
+    del_part: &Part,
+    params_free: &Constraints,
+) -> bool {
+    let required: Vec<Vec<(Term, Term)>> = action
+        .positive
+        .iter()
+        .filter(|p| p.pred == del.pred)
+        .map(|p| zipped(&del.args, &p.args))
+        .collect();
+    if required.is_empty() {
+        return false;
+    }
+    let mut system = Constraints::default();
+    system.require_equal(add_cover.to_vec());
+    system.require_equal(del_part.cover(&del.args));
+    system.equality_choices.push(required);
+    if add.pred == del.pred {
+        system.require_some_differ(zipped(&add.args, &del.args));
+    }
+    system.extend(params_free);
+    system.solvable()
+}
+
+/// The candidates refining `c` for an unbalanced `add` of `action`: one more part, for
+/// a predicate `action` deletes and `c` lacks, in Fast Downward's order.
+fn refinements(c: &Candidate, action: &LiftedAction, add: &Atom, rank: &[u32]) -> Vec<Candidate> {
+    let Some(part) = c.part(add.pred) else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for del in &action.dels {
+        if c.part(del.pred).is_none() {
+            for new_part in part.balancing_parts(&add.args, del, rank[del.pred.0 as usize]) {
+                out.push(c.with(new_part));
+            }
+        }
+    }
     out
+}
+
+/// The initial candidates: per fluent predicate in declaration order, no position
+/// counted, then each position counted in turn.
+fn initial_candidates(model: &Model, rank: &[u32], arity: &[Option<usize>]) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    for (i, p) in model.predicates.iter().enumerate() {
+        let Some(n) = arity[i].filter(|_| p.fluent) else {
+            continue;
+        };
+        let pred = PredId(i as u32);
+        let all: Vec<i8> = (0..n as i8).collect();
+        out.push(Candidate {
+            parts: vec![Part {
+                rank: rank[i],
+                pred,
+                args: all.clone(),
+            }],
+        });
+        for counted in 0..n {
+            let mut args: Vec<i8> = all[..n - 1].to_vec();
+            args.insert(counted, COUNTED);
+            out.push(Candidate {
+                parts: vec![Part {
+                    rank: rank[i],
+                    pred,
+                    args,
+                }],
+            });
+        }
+    }
+    out
+}
+
+/// The invariant parameters' values for an atom of a part.
+fn key_of(part: &Part, args: &[u32]) -> Vec<u32> {
+    let mut key = vec![0; part.arity()];
+    for (&a, &o) in part.args.iter().zip(args) {
+        if a != COUNTED {
+            key[a as usize] = o;
+        }
+    }
+    key
 }
 
 /// Synthesises invariants and returns their ground mutex groups (each sorted, size >= 2,
 /// deduplicated, in a deterministic order).
 pub(crate) fn mutex_groups(model: &Model, g: &Grounding) -> Vec<Group> {
-    let mut adders: Vec<Vec<u32>> = vec![Vec::new(); model.predicates.len()];
-    for (i, a) in g.actions.iter().enumerate() {
-        let mut preds: Vec<PredId> = a.add.iter().map(|&x| g.atoms.pred(x)).collect();
-        preds.sort_unstable();
-        preds.dedup();
-        for p in preds {
-            adders[p.0 as usize].push(i as u32);
+    let mut names: Vec<(&str, usize)> = model
+        .predicates
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (p.name.as_str(), i))
+        .collect();
+    names.sort_unstable();
+    let mut rank = vec![0u32; model.predicates.len()];
+    for (r, &(_, i)) in names.iter().enumerate() {
+        rank[i] = r as u32;
+    }
+    let mut arity: Vec<Option<usize>> = vec![None; model.predicates.len()];
+    for s in &model.schemas {
+        for p in s
+            .positive
+            .iter()
+            .chain(&s.negative)
+            .chain(&s.add)
+            .chain(&s.delete)
+        {
+            arity[p.pred.0 as usize] = Some(p.args.len());
         }
     }
-    let mut checker = Checker {
-        g,
-        adders,
-        stamp: vec![0; g.actions.len()],
-        round: 0,
+    for (pred, args) in &model.init {
+        arity[pred.0 as usize] = Some(args.len());
+    }
+
+    let actions = lifted_actions(model, g);
+    let mut threats: Vec<Vec<usize>> = vec![Vec::new(); model.predicates.len()];
+    for (i, a) in actions.iter().enumerate() {
+        for add in &a.adds {
+            let list = &mut threats[add.pred.0 as usize];
+            if list.last() != Some(&i) {
+                list.push(i);
+            }
+        }
+    }
+    let mut synthesis = Synthesis {
+        actions,
+        threats,
+        rank: rank.clone(),
+        random: PythonRandom::new(FAST_DOWNWARD_INVARIANT_SEED),
+        queue: VecDeque::new(),
+        seen: FxHashSet::default(),
     };
+    for c in initial_candidates(model, &rank, &arity)
+        .into_iter()
+        .take(MAX_CANDIDATES)
+    {
+        if synthesis.seen.insert(c.clone()) {
+            synthesis.queue.push_back(c);
+        }
+    }
+    let mut invariants: Vec<Candidate> = Vec::new();
+    while let Some(c) = synthesis.queue.pop_front() {
+        if synthesis.check(&c) {
+            invariants.push(c);
+        }
+    }
+    ground_groups(model, g, &invariants)
+}
 
-    // Arities of fluent predicates, from any atom (predicates without atoms cannot matter).
-    let mut arity: FxHashMap<PredId, usize> = FxHashMap::default();
-    for a in 0..g.atoms.len() as AtomId {
-        if g.fluent[a as usize] {
-            arity
-                .entry(g.atoms.pred(a))
-                .or_insert_with(|| g.atoms.args(a).len());
+/// The groups of the invariants: per invariant and parameter binding with exactly one
+/// atom true initially, the reachable fluent atoms of that binding.
+fn ground_groups(model: &Model, g: &Grounding, invariants: &[Candidate]) -> Vec<Group> {
+    // Initial atoms in the problem's order, each once.
+    let mut init: Vec<(PredId, Vec<u32>)> = Vec::new();
+    let mut init_seen: FxHashSet<(PredId, Vec<u32>)> = FxHashSet::default();
+    for (pred, args) in &model.init {
+        let args: Vec<u32> = args.iter().map(|o| o.0).collect();
+        if init_seen.insert((*pred, args.clone())) {
+            init.push((*pred, args));
         }
     }
-    let mut preds: Vec<(PredId, usize)> = arity.into_iter().collect();
-    preds.sort_unstable();
-    let mut queue: VecDeque<Candidate> = VecDeque::new();
-    let mut seen: FxHashSet<Candidate> = FxHashSet::default();
-    for &(pred, n) in &preds {
-        // No counted position, or each position counted in turn.
-        let all: Vec<u8> = (0..n as u8).collect();
-        let mut starts = vec![Part {
-            pred,
-            fixed: all.clone(),
-        }];
-        for counted in 0..n as u8 {
-            starts.push(Part {
-                pred,
-                fixed: all.iter().copied().filter(|&p| p != counted).collect(),
-            });
-        }
-        for part in starts {
-            let c = Candidate { parts: vec![part] };
-            if seen.insert(c.clone()) {
-                queue.push_back(c);
-            }
-        }
-    }
-    let mut invariants = Vec::new();
-    let mut examined = 0;
-    while let Some(c) = queue.pop_front() {
-        examined += 1;
-        if examined > MAX_CANDIDATES {
-            break;
-        }
-        let verdict = checker.check(&c);
-        match verdict {
-            Verdict::Invariant => invariants.push(c),
-            Verdict::Invalid => {}
-            Verdict::Unbalanced { action, key } => {
-                let act = &g.actions[action as usize];
-                for &d in &act.del {
-                    if act.pre.binary_search(&d).is_err() || !g.fluent[d as usize] {
-                        continue;
-                    }
-                    for part in balancing_parts(g, d, &key) {
-                        if c.parts.contains(&part) {
-                            continue;
-                        }
-                        let mut parts = c.parts.clone();
-                        parts.push(part);
-                        parts.sort_unstable();
-                        let refined = Candidate { parts };
-                        if seen.insert(refined.clone()) {
-                            queue.push_back(refined);
-                        }
-                    }
-                }
-            }
-        }
-    }
-
-    // Ground groups: every reachable fluent atom joins the group of its key, per invariant.
     let mut groups: Vec<Group> = Vec::new();
     let mut group_set: FxHashSet<Group> = FxHashSet::default();
-    for inv in &invariants {
+    for inv in invariants {
+        let mut initially: FxHashMap<Vec<u32>, usize> = FxHashMap::default();
+        let mut keys_in_order: Vec<Vec<u32>> = Vec::new();
+        for (pred, args) in &init {
+            if let Some(part) = inv.part(*pred) {
+                let key = key_of(part, args);
+                let count = initially.entry(key.clone()).or_insert(0);
+                if *count == 0 {
+                    keys_in_order.push(key);
+                }
+                *count += 1;
+            }
+        }
+        keys_in_order.retain(|k| initially[k] == 1);
+        if keys_in_order.is_empty() {
+            continue;
+        }
         let mut by_key: FxHashMap<Vec<u32>, Vec<AtomId>> = FxHashMap::default();
         for a in 0..g.atoms.len() as AtomId {
             if !g.fluent[a as usize] {
                 continue;
             }
-            for part in parts_for(inv, g, a) {
-                by_key.entry(key_of(g, part, a)).or_default().push(a);
+            if let Some(part) = inv.part(g.atoms.pred(a)) {
+                by_key
+                    .entry(key_of(part, g.atoms.args(a)))
+                    .or_default()
+                    .push(a);
             }
         }
-        let mut keyed: Vec<(Vec<u32>, Vec<AtomId>)> = by_key.into_iter().collect();
-        keyed.sort_unstable();
-        for (_, mut atoms) in keyed {
+        debug_assert!(keys_in_order.iter().all(|k| k.len() == inv.arity()));
+        for key in keys_in_order {
+            let Some(mut atoms) = by_key.remove(&key) else {
+                continue;
+            };
             atoms.sort_unstable();
             atoms.dedup();
             if atoms.len() >= 2 && group_set.insert(atoms.clone()) {
@@ -314,4 +837,84 @@ pub(crate) fn mutex_groups(model: &Model, g: &Grounding) -> Vec<Group> {
         }
     }
     groups
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// CPython 3.11's `random.Random(314159)`: `[r.randrange(n) for n in [1, 2, 3, 5, 7,
+    /// 100, 1000, 1, 1, 2, 9]]` is `[0, 1, 1, 0, 0, 73, 313, 0, 0, 0, 0]`.
+    #[test]
+    fn draws_are_pythons() {
+        let mut r = PythonRandom::new(314_159);
+        let draws: Vec<usize> = [1, 2, 3, 5, 7, 100, 1000, 1, 1, 2, 9]
+            .iter()
+            .map(|&n| r.randrange(n))
+            .collect();
+        assert_eq!(draws, [0, 1, 1, 0, 0, 73, 313, 0, 0, 0, 0]);
+    }
+
+    fn part(pred: u32, args: &[i8]) -> Part {
+        Part {
+            rank: pred,
+            pred: PredId(pred),
+            args: args.to_vec(),
+        }
+    }
+
+    /// Fast Downward's own example: part `P(v0, v1, v2)`, add `P(a, b, c)`, delete
+    /// `Q(b, c, d, a)`: the one balancing part is `Q(v1, v2, counted, v0)`.
+    #[test]
+    fn balancing_parts_map_values_to_parameters() {
+        let (a, b, c, d) = (
+            Term::Param(0),
+            Term::Param(1),
+            Term::Param(2),
+            Term::Param(3),
+        );
+        let p = part(0, &[0, 1, 2]);
+        let q = Atom {
+            pred: PredId(1),
+            args: vec![b, c, d, a],
+        };
+        assert_eq!(
+            p.balancing_parts(&[a, b, c], &q, 1),
+            vec![part(1, &[1, 2, COUNTED, 0])]
+        );
+        // A value twice in the deleted atom and once in the added one: one position is
+        // counted, the other takes the parameter, both ways round.
+        let q = Atom {
+            pred: PredId(1),
+            args: vec![a, a],
+        };
+        let p = part(0, &[0, COUNTED]);
+        assert_eq!(
+            p.balancing_parts(&[a, b], &q, 1),
+            vec![part(1, &[0, COUNTED]), part(1, &[COUNTED, 0])]
+        );
+        // Too many arguments left over: no part.
+        let q = Atom {
+            pred: PredId(1),
+            args: vec![c, d, a],
+        };
+        assert!(p.balancing_parts(&[a, b], &q, 1).is_empty());
+    }
+
+    #[test]
+    fn constraints_respect_objects_and_inequalities() {
+        let (x, y) = (Term::Param(0), Term::Param(1));
+        let (o1, o2) = (Term::Object(1), Term::Object(2));
+        let mut s = Constraints::default();
+        s.require_equal(vec![(x, o1), (y, o2)]);
+        assert!(s.solvable());
+        s.require_equal(vec![(x, y)]);
+        assert!(!s.solvable(), "two objects in one class");
+        let mut s = Constraints::default();
+        s.equality_choices.push(vec![vec![(x, y)], vec![(x, o1)]]);
+        s.require_some_differ(vec![(x, y)]);
+        assert!(s.solvable(), "the second choice works");
+        s.not_objects.push(x);
+        assert!(!s.solvable(), "neither works");
+    }
 }

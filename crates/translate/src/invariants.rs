@@ -901,6 +901,89 @@ mod tests {
         assert!(p.balancing_parts(&[a, b], &q, 1).is_empty());
     }
 
+    /// The groups of a small task, as atom texts, each group sorted.
+    fn groups_of(domain: &str, problem: &str) -> Vec<Vec<String>> {
+        let domain = pddl::parse_domain(domain).expect("domain");
+        let problem = pddl::parse_problem(problem).expect("problem");
+        let model = Model::build(&domain, &problem).expect("model");
+        let g = crate::ground::ground(&model).expect("grounding");
+        let mut groups: Vec<Vec<String>> = mutex_groups(&model, &g)
+            .iter()
+            .map(|group| {
+                let mut atoms: Vec<String> = group
+                    .iter()
+                    .map(|&a| {
+                        let args = g.atoms.args(a).iter().copied();
+                        crate::ground::atom_text(&model, g.atoms.pred(a), args)
+                    })
+                    .collect();
+                atoms.sort();
+                atoms
+            })
+            .collect();
+        groups.sort();
+        groups
+    }
+
+    const GRIPPER: &str = "(define (domain gripper)
+        (:predicates (room ?r) (ball ?b) (gripper ?g) (at-robby ?r) (at ?b ?r)
+                     (free ?g) (carry ?b ?g))
+        (:action move :parameters (?from ?to)
+          :precondition (and (room ?from) (room ?to) (at-robby ?from))
+          :effect (and (at-robby ?to) (not (at-robby ?from))))
+        (:action pick :parameters (?b ?r ?g)
+          :precondition (and (ball ?b) (room ?r) (gripper ?g) (at ?b ?r) (at-robby ?r) (free ?g))
+          :effect (and (carry ?b ?g) (not (at ?b ?r)) (not (free ?g))))
+        (:action drop :parameters (?b ?r ?g)
+          :precondition (and (ball ?b) (room ?r) (gripper ?g) (carry ?b ?g) (at-robby ?r))
+          :effect (and (at ?b ?r) (free ?g) (not (carry ?b ?g)))))";
+
+    /// Refinement finds the groups that need two predicates: where a ball is (in a room
+    /// or in a gripper) and what a gripper holds (nothing or a ball).
+    #[test]
+    fn refinement_finds_groups_over_two_predicates() {
+        let groups = groups_of(
+            GRIPPER,
+            "(define (problem p) (:domain gripper) (:objects a b l r1 r2)
+               (:init (room r1) (room r2) (ball a) (ball b) (gripper l) (at-robby r1)
+                      (at a r1) (at b r2) (free l))
+               (:goal (and (at a r2) (at b r1))))",
+        );
+        let text = |g: &[&str]| g.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        assert_eq!(
+            groups,
+            vec![
+                text(&["at(a, r1)", "at(a, r2)", "carry(a, l)"]),
+                text(&["at(b, r1)", "at(b, r2)", "carry(b, l)"]),
+                text(&["at-robby(r1)", "at-robby(r2)"]),
+                text(&["carry(a, l)", "carry(b, l)", "free(l)"]),
+            ]
+        );
+    }
+
+    /// A binding with two atoms true initially yields no group (nor does one with none,
+    /// Fast Downward's rule): two robots, so "where is the robot" is no mutex group, while
+    /// the balls' groups stay.
+    #[test]
+    fn bindings_with_two_initial_atoms_give_no_group() {
+        let groups = groups_of(
+            GRIPPER,
+            "(define (problem p) (:domain gripper) (:objects a l r1 r2)
+               (:init (room r1) (room r2) (ball a) (gripper l) (at-robby r1) (at-robby r2)
+                      (at a r1) (free l))
+               (:goal (at a r2)))",
+        );
+        assert!(
+            groups.iter().all(|g| !g[0].starts_with("at-robby")),
+            "{groups:?}"
+        );
+        assert!(groups.contains(&vec![
+            "at(a, r1)".to_string(),
+            "at(a, r2)".to_string(),
+            "carry(a, l)".to_string()
+        ]));
+    }
+
     #[test]
     fn constraints_respect_objects_and_inequalities() {
         let (x, y) = (Term::Param(0), Term::Param(1));

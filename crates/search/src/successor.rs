@@ -138,6 +138,27 @@ impl SuccessorGenerator {
         }
     }
 
+    /// The nodes a lookup in `state` visits (a measure of its cost).
+    pub(crate) fn visited_nodes(&self, state: &[u32]) -> usize {
+        let mut visited = 0;
+        let mut stack = vec![0u32];
+        while let Some(n) = stack.pop() {
+            visited += 1;
+            let node = self.nodes[n as usize];
+            if node.var != NONE {
+                if node.dont_care != NONE {
+                    stack.push(node.dont_care);
+                }
+                let child =
+                    self.children[node.children_start as usize + state[node.var as usize] as usize];
+                if child != NONE {
+                    stack.push(child);
+                }
+            }
+        }
+        visited
+    }
+
     /// The number of tree nodes (for logs).
     pub fn num_nodes(&self) -> usize {
         self.nodes.len()

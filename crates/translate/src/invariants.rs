@@ -44,7 +44,7 @@ use crate::ground::{AtomId, Grounding};
 use crate::model::{Arg, Model, Pattern, PredId};
 
 /// Candidates ever queued, as Fast Downward's `--invariant-generation-max-candidates`.
-pub(crate) const MAX_CANDIDATES: usize = 100_000;
+const MAX_CANDIDATES: usize = 100_000;
 
 /// The seed of Fast Downward's translator for the order of its balance checks.
 const FAST_DOWNWARD_INVARIANT_SEED: u32 = 314_159;

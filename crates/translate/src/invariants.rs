@@ -343,11 +343,18 @@ impl Part {
     /// invariant parameters take the values they take in `own` (this part's added atom):
     /// every position of `other` gets the parameter whose value it holds, one position may
     /// stay counted. Several positions with one value give one part per permutation, in
-    /// Fast Downward's order.
-    fn balancing_parts(&self, own: &[Term], other: &Atom, rank: u32) -> Vec<Part> {
+    /// Fast Downward's order. Each part goes to `take`, until it returns false (there
+    /// can be factorially many).
+    fn balancing_parts(
+        &self,
+        own: &[Term],
+        other: &Atom,
+        rank: u32,
+        take: &mut dyn FnMut(Part) -> bool,
+    ) {
         let mut omissions_left = match other.args.len().checked_sub(self.arity()) {
             Some(n @ (0 | 1)) => n,
-            _ => return Vec::new(),
+            _ => return,
         };
         // The invariant parameters by value, in the order of their positions in `own`.
         let mut params_of: Vec<(Term, Vec<i8>)> = Vec::new();
@@ -385,57 +392,58 @@ impl Part {
                     params.push(COUNTED);
                     omissions_left = 0;
                 }
-                _ => return Vec::new(),
+                _ => return,
             }
         }
-        let mut out = Vec::new();
         let mut args = vec![COUNTED; other.args.len()];
         assign_factors(&factors, 0, &mut args, &mut |args| {
-            out.push(Part {
+            take(Part {
                 rank,
                 pred: other.pred,
                 args: args.to_vec(),
             })
         });
-        out
     }
 }
 
 /// Every way to give each factor's positions a permutation of its parameters: factors
 /// in order, the first varying slowest, permutations in lexicographic order of indices
-/// (Python's `itertools.product` over `itertools.permutations`).
+/// (Python's `itertools.product` over `itertools.permutations`). Stops, returning false,
+/// when `emit` returns false.
 fn assign_factors(
     factors: &[(Vec<usize>, Vec<i8>)],
     k: usize,
     args: &mut [i8],
-    emit: &mut dyn FnMut(&[i8]),
-) {
+    emit: &mut dyn FnMut(&[i8]) -> bool,
+) -> bool {
     let Some((positions, params)) = factors.get(k) else {
-        emit(args);
-        return;
+        return emit(args);
     };
     fn permute(
         positions: &[usize],
         remaining: &mut Vec<i8>,
         depth: usize,
         args: &mut [i8],
-        then: &mut dyn FnMut(&mut [i8]),
-    ) {
+        then: &mut dyn FnMut(&mut [i8]) -> bool,
+    ) -> bool {
         if depth == positions.len() {
-            then(args);
-            return;
+            return then(args);
         }
         for i in 0..remaining.len() {
             let p = remaining.remove(i);
             args[positions[depth]] = p;
-            permute(positions, remaining, depth + 1, args, then);
+            let go_on = permute(positions, remaining, depth + 1, args, then);
             remaining.insert(i, p);
+            if !go_on {
+                return false;
+            }
         }
+        true
     }
     let mut remaining = params.clone();
     permute(positions, &mut remaining, 0, args, &mut |args| {
         assign_factors(factors, k + 1, args, emit)
-    });
+    })
 }
 
 /// An invariant candidate: its parts in Fast Downward's sorted order.
@@ -495,13 +503,6 @@ struct Synthesis {
 }
 
 impl Synthesis {
-    fn enqueue(&mut self, c: Candidate) {
-        if self.seen.len() < MAX_CANDIDATES && !self.seen.contains(&c) {
-            self.seen.insert(c.clone());
-            self.queue.push_back(c);
-        }
-    }
-
     /// Whether `c` is an invariant; if not, its refinements are queued.
     fn check(&mut self, c: &Candidate) -> bool {
         let mut actions: Vec<usize> = Vec::new();
@@ -522,10 +523,7 @@ impl Synthesis {
                 return false;
             }
             if let Some(add) = unbalanced_add(c, action) {
-                let refinements = refinements(c, action, add, &self.rank);
-                for r in refinements {
-                    self.enqueue(r);
-                }
+                refine(c, action, add, &self.rank, &mut self.queue, &mut self.seen);
                 return false;
             }
         }
@@ -656,21 +654,35 @@ fn balances(
     system.solvable()
 }
 
-/// The candidates refining `c` for an unbalanced `add` of `action`: one more part, for
-/// a predicate `action` deletes and `c` lacks, in Fast Downward's order.
-fn refinements(c: &Candidate, action: &LiftedAction, add: &Atom, rank: &[u32]) -> Vec<Candidate> {
+/// Queues the candidates refining `c` for an unbalanced `add` of `action`: one more
+/// part, for a predicate `action` deletes and `c` lacks, in Fast Downward's order, until
+/// [`MAX_CANDIDATES`] candidates have been queued in all.
+fn refine(
+    c: &Candidate,
+    action: &LiftedAction,
+    add: &Atom,
+    rank: &[u32],
+    queue: &mut VecDeque<Candidate>,
+    seen: &mut FxHashSet<Candidate>,
+) {
     let Some(part) = c.part(add.pred) else {
-        return Vec::new();
+        return;
     };
-    let mut out = Vec::new();
     for del in &action.dels {
+        if seen.len() >= MAX_CANDIDATES {
+            return;
+        }
         if c.part(del.pred).is_none() {
-            for new_part in part.balancing_parts(&add.args, del, rank[del.pred.0 as usize]) {
-                out.push(c.with(new_part));
-            }
+            part.balancing_parts(&add.args, del, rank[del.pred.0 as usize], &mut |new_part| {
+                let refined = c.with(new_part);
+                if !seen.contains(&refined) {
+                    seen.insert(refined.clone());
+                    queue.push_back(refined);
+                }
+                seen.len() < MAX_CANDIDATES
+            });
         }
     }
-    out
 }
 
 /// The initial candidates: per fluent predicate in declaration order, no position
@@ -855,6 +867,15 @@ mod tests {
         assert_eq!(draws, [0, 1, 1, 0, 0, 73, 313, 0, 0, 0, 0]);
     }
 
+    fn balancing(p: &Part, own: &[Term], other: &Atom) -> Vec<Part> {
+        let mut out = Vec::new();
+        p.balancing_parts(own, other, 1, &mut |part| {
+            out.push(part);
+            true
+        });
+        out
+    }
+
     fn part(pred: u32, args: &[i8]) -> Part {
         Part {
             rank: pred,
@@ -879,7 +900,7 @@ mod tests {
             args: vec![b, c, d, a],
         };
         assert_eq!(
-            p.balancing_parts(&[a, b, c], &q, 1),
+            balancing(&p, &[a, b, c], &q),
             vec![part(1, &[1, 2, COUNTED, 0])]
         );
         // A value twice in the deleted atom and once in the added one: one position is
@@ -890,7 +911,7 @@ mod tests {
         };
         let p = part(0, &[0, COUNTED]);
         assert_eq!(
-            p.balancing_parts(&[a, b], &q, 1),
+            balancing(&p, &[a, b], &q),
             vec![part(1, &[0, COUNTED]), part(1, &[COUNTED, 0])]
         );
         // Too many arguments left over: no part.
@@ -898,7 +919,7 @@ mod tests {
             pred: PredId(1),
             args: vec![c, d, a],
         };
-        assert!(p.balancing_parts(&[a, b], &q, 1).is_empty());
+        assert!(balancing(&p, &[a, b], &q).is_empty());
     }
 
     /// The groups of a small task, as atom texts, each group sorted.
@@ -982,6 +1003,30 @@ mod tests {
             "at(a, r2)".to_string(),
             "carry(a, l)".to_string()
         ]));
+    }
+
+    /// An added atom with one variable in all 12 positions, balanced only by a deleted
+    /// atom alike, has 12! balancing parts; refinement stops at [`MAX_CANDIDATES`] queued
+    /// candidates instead of enumerating 479 million.
+    #[test]
+    fn refinement_stops_at_the_candidate_limit() {
+        let xs = vec!["?x"; 12].join(" ");
+        let params: Vec<String> = (0..12).map(|i| format!("?a{i}")).collect();
+        let params = params.join(" ");
+        let domain = format!(
+            "(define (domain d) (:predicates (p {params}) (q {params}))
+               (:action flip :parameters (?x) :precondition (q {xs})
+                 :effect (and (p {xs}) (not (q {xs}))))
+               (:action flop :parameters (?x) :precondition (p {xs})
+                 :effect (and (q {xs}) (not (p {xs})))))"
+        );
+        let os = vec!["o"; 12].join(" ");
+        let problem = format!(
+            "(define (problem p) (:domain d) (:objects o) (:init (q {os})) (:goal (p {os})))"
+        );
+        let groups = groups_of(&domain, &problem);
+        // The two atoms are one group (found among the refinements).
+        assert_eq!(groups.len(), 1, "{groups:?}");
     }
 
     #[test]

@@ -1010,7 +1010,7 @@ mod tests {
     /// candidates instead of enumerating 479 million.
     #[test]
     fn refinement_stops_at_the_candidate_limit() {
-        let xs = vec!["?x"; 12].join(" ");
+        let xs = ["?x"; 12].join(" ");
         let params: Vec<String> = (0..12).map(|i| format!("?a{i}")).collect();
         let params = params.join(" ");
         let domain = format!(
@@ -1020,7 +1020,7 @@ mod tests {
                (:action flop :parameters (?x) :precondition (p {xs})
                  :effect (and (q {xs}) (not (p {xs})))))"
         );
-        let os = vec!["o"; 12].join(" ");
+        let os = ["o"; 12].join(" ");
         let problem = format!(
             "(define (problem p) (:domain d) (:objects o) (:init (q {os})) (:goal (p {os})))"
         );

@@ -628,15 +628,14 @@ impl<'t> Climb<'t> {
             }
         }
         let keys: Vec<usize> = live.iter().map(|&c| key_of[c]).collect();
-        let improved = count_improvements(
-            &self.cliques,
-            &self.values,
-            &self.sample_h,
+        let collection = CollectionOnSamples {
+            cliques: &self.cliques,
+            values: &self.values,
+            sample_h: &self.sample_h,
             patterns,
-            &non_additive,
-            &keys,
-            &candidate_h,
-        );
+            non_additive: &non_additive,
+        };
+        let improved = count_improvements(&collection, &keys, &candidate_h);
         let mut best: Option<(usize, u64)> = None;
         for (&c, &improved) in live.iter().zip(&improved) {
             if best.is_none_or(|(_, b)| improved > b) {
@@ -661,14 +660,11 @@ impl<'t> Climb<'t> {
 /// (logistics: nearly all, with a thousand cliques) the part is summed for all samples
 /// at once, four times faster there.
 fn count_improvements(
-    cliques: &[Vec<u32>],
-    values: &[u32],
-    sample_h: &[Option<u64>],
-    patterns: usize,
-    non_additive: &[Vec<u32>],
+    collection: &CollectionOnSamples<'_>,
     keys: &[usize],
     candidate_h: &[u32],
 ) -> Vec<u64> {
+    let (sample_h, non_additive) = (collection.sample_h, collection.non_additive);
     let samples = sample_h.len();
     let mut needed = vec![0usize; non_additive.len()];
     let mut marked = vec![usize::MAX; samples];
@@ -708,15 +704,7 @@ fn count_improvements(
         for &i in &chosen {
             sub_h.extend_from_slice(&candidate_h[i * samples..(i + 1) * samples]);
         }
-        let counts = count(
-            cliques,
-            values,
-            sample_h,
-            patterns,
-            non_additive,
-            &sub_keys,
-            &sub_h,
-        );
+        let counts = count(collection, &sub_keys, &sub_h);
         for (&i, c) in chosen.iter().zip(counts) {
             improved[i] = c;
         }
@@ -724,8 +712,19 @@ fn count_improvements(
     improved
 }
 
-type CountFn =
-    fn(&[Vec<u32>], &[u32], &[Option<u64>], usize, &[Vec<u32>], &[usize], &[u32]) -> Vec<u64>;
+type CountFn = fn(&CollectionOnSamples<'_>, &[usize], &[u32]) -> Vec<u64>;
+
+/// The collection's side of evaluating candidates: its cliques, its patterns' values on
+/// the samples (`values[p * samples + s]`), its canonical value per sample (`None`: a
+/// dead end), and the groups of collection patterns candidates are not additive with.
+#[derive(Debug, Clone, Copy)]
+struct CollectionOnSamples<'a> {
+    cliques: &'a [Vec<u32>],
+    values: &'a [u32],
+    sample_h: &'a [Option<u64>],
+    patterns: usize,
+    non_additive: &'a [Vec<u32>],
+}
 
 /// [`count_improvements`] for groups whose candidates need the collection's part on
 /// many samples.
@@ -738,14 +737,17 @@ type CountFn =
 /// samples in vector registers) and the group keeps the largest sum per sample. Fast
 /// Downward instead sums each clique per candidate and sample.
 fn count_by_reduced_cliques(
-    cliques: &[Vec<u32>],
-    values: &[u32],
-    sample_h: &[Option<u64>],
-    patterns: usize,
-    non_additive: &[Vec<u32>],
+    collection: &CollectionOnSamples<'_>,
     keys: &[usize],
     candidate_h: &[u32],
 ) -> Vec<u64> {
+    let CollectionOnSamples {
+        cliques,
+        values,
+        sample_h,
+        patterns,
+        non_additive,
+    } = *collection;
     let samples = sample_h.len();
     let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); non_additive.len()];
     for (i, &k) in keys.iter().enumerate() {
@@ -817,14 +819,17 @@ fn count_by_reduced_cliques(
 /// queries look at a few cliques. A candidate with value 0 never improves a sample
 /// (the difference is at most `h(s)`).
 fn count_by_sorted_cliques(
-    cliques: &[Vec<u32>],
-    values: &[u32],
-    sample_h: &[Option<u64>],
-    patterns: usize,
-    non_additive: &[Vec<u32>],
+    collection: &CollectionOnSamples<'_>,
     keys: &[usize],
     candidate_h: &[u32],
 ) -> Vec<u64> {
+    let CollectionOnSamples {
+        cliques,
+        values,
+        sample_h,
+        patterns,
+        non_additive,
+    } = *collection;
     let samples = sample_h.len();
     let words = patterns.div_ceil(64).max(1);
     let mut members = vec![0u64; cliques.len() * words];
@@ -1506,15 +1511,14 @@ mod tests {
             ]
             .iter()
             .map(|count| {
-                count(
-                    &cliques,
-                    &values,
-                    &sample_h,
+                let collection = CollectionOnSamples {
+                    cliques: &cliques,
+                    values: &values,
+                    sample_h: &sample_h,
                     patterns,
-                    &groups,
-                    &keys,
-                    &candidate_h,
-                )
+                    non_additive: &groups,
+                };
+                count(&collection, &keys, &candidate_h)
             })
             .collect();
             for (i, &k) in keys.iter().enumerate() {

@@ -19,17 +19,19 @@
 //!    average operator cost)` under the current collection), `n = 10` when `h(initial)`
 //!    is 0. A walk ends early in a state without applicable operators, and restarts at the
 //!    initial state when it reaches a dead end of the current collection. Applicable
-//!    operators are tracked incrementally (a count of unsatisfied preconditions per
-//!    operator), so a step costs the operators whose preconditions mention the changed
-//!    variables, not a successor-generator traversal;
+//!    operators are either tracked incrementally (a count of unsatisfied preconditions
+//!    per operator: a step costs the operators whose preconditions mention the changed
+//!    values) or listed by the successor generator (a step costs the tree nodes on the
+//!    way), whichever a probe walk finds cheaper for the task (see `Walker`);
 //! 2. counts, for every candidate, the samples whose canonical value would rise with the
 //!    candidate added: a sample `s` improves if the candidate's database calls it a dead
 //!    end, or if for some maximal additive subset `C` of the current collection the sum
 //!    over the patterns of `C` additive with the candidate, plus the candidate's value,
 //!    exceeds the current value of `s` (the counting approximation of the paper); samples
-//!    that are dead ends of the collection never improve. Per sample, the cliques are
-//!    taken by decreasing sum, lazily, and candidates that are not additive with the same
-//!    collection patterns share the scan (see `count_improvements`);
+//!    that are dead ends of the collection never improve. Candidates not additive with
+//!    the same collection patterns share the work: where they need the collection's part
+//!    on few samples, the cliques are scanned per sample by decreasing sum, lazily; where
+//!    on most, the part is summed over all samples at once (see `count_improvements`);
 //! 3. adds the candidate with the most improved samples (the first of equals) if it
 //!    improves at least `min_improvement` of them, and generates the candidates of the new
 //!    pattern; otherwise the climb ends.

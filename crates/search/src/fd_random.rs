@@ -19,10 +19,10 @@
 //! `ipdb()`'s default seed is Fast Downward's: `random_seed=-1` selects its global
 //! generator, which is seeded with 2011.
 
+use task::mersenne_twister::MersenneTwister;
+
 /// Fast Downward's seed for `random_seed=-1`, its global generator.
 pub const DEFAULT_SEED: u32 = 2011;
-
-use task::mersenne_twister::MersenneTwister;
 
 /// The 32-bit Mersenne Twister with Fast Downward's two kinds of draws.
 #[derive(Debug, Clone)]

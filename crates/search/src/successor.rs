@@ -116,52 +116,63 @@ impl SuccessorGenerator {
     }
 
     /// Replaces `out` with the operators applicable in `state` (one value per variable),
-    /// in an order fixed by the task.
+    /// in Fast Downward's order: sorted by their sorted preconditions, then by index (a
+    /// node's own operators, then its value child's, then its don't-care child's).
+    /// `ipdb`'s random walks rely on that order.
     #[inline]
     pub fn applicable(&mut self, state: &[u32], out: &mut Vec<OpId>) {
         out.clear();
-        self.stack.clear();
-        self.stack.push(0);
-        while let Some(n) = self.stack.pop() {
-            let node = self.nodes[n as usize];
-            out.extend_from_slice(&self.ops[node.ops_start as usize..node.ops_end as usize]);
-            if node.var != NONE {
-                if node.dont_care != NONE {
-                    self.stack.push(node.dont_care);
-                }
-                let value = state[node.var as usize] as usize;
-                let child = self.children[node.children_start as usize + value];
-                if child != NONE {
-                    self.stack.push(child);
-                }
-            }
-        }
+        let ops = &self.ops;
+        traverse(
+            &self.nodes,
+            &self.children,
+            state,
+            &mut self.stack,
+            |node| {
+                out.extend_from_slice(&ops[node.ops_start as usize..node.ops_end as usize]);
+            },
+        );
     }
 
     /// The nodes a lookup in `state` visits (a measure of its cost).
     pub(crate) fn visited_nodes(&self, state: &[u32]) -> usize {
         let mut visited = 0;
-        let mut stack = vec![0u32];
-        while let Some(n) = stack.pop() {
+        traverse(&self.nodes, &self.children, state, &mut Vec::new(), |_| {
             visited += 1;
-            let node = self.nodes[n as usize];
-            if node.var != NONE {
-                if node.dont_care != NONE {
-                    stack.push(node.dont_care);
-                }
-                let child =
-                    self.children[node.children_start as usize + state[node.var as usize] as usize];
-                if child != NONE {
-                    stack.push(child);
-                }
-            }
-        }
+        });
         visited
     }
 
     /// The number of tree nodes (for logs).
     pub fn num_nodes(&self) -> usize {
         self.nodes.len()
+    }
+}
+
+/// Visits the nodes whose tests hold in `state`, depth first: a node, then its child for
+/// the state's value, then its don't-care child.
+#[inline]
+fn traverse(
+    nodes: &[Node],
+    children: &[u32],
+    state: &[u32],
+    stack: &mut Vec<u32>,
+    mut visit: impl FnMut(&Node),
+) {
+    stack.clear();
+    stack.push(0);
+    while let Some(n) = stack.pop() {
+        let node = &nodes[n as usize];
+        visit(node);
+        if node.var != NONE {
+            if node.dont_care != NONE {
+                stack.push(node.dont_care);
+            }
+            let child = children[node.children_start as usize + state[node.var as usize] as usize];
+            if child != NONE {
+                stack.push(child);
+            }
+        }
     }
 }
 

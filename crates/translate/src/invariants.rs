@@ -463,10 +463,6 @@ impl Candidate {
         parts.sort_unstable();
         Candidate { parts }
     }
-
-    fn arity(&self) -> usize {
-        self.parts[0].arity()
-    }
 }
 
 /// Python's `random.Random`: `randrange(n)` as CPython's `_randbelow_with_getrandbits`.
@@ -836,7 +832,6 @@ fn ground_groups(model: &Model, g: &Grounding, invariants: &[Candidate]) -> Vec<
                     .push(a);
             }
         }
-        debug_assert!(keys_in_order.iter().all(|k| k.len() == inv.arity()));
         for key in keys_in_order {
             let Some(mut atoms) = by_key.remove(&key) else {
                 continue;

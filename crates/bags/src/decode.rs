@@ -40,9 +40,11 @@ pub fn decode(schema: &Schema, encoding: Encoding, data: &[u8]) -> Result<Value,
         cursor.little = match header[1] {
             0 => false,
             1 => true,
-            kind => return Err(cursor.error(format!(
+            kind => {
+                return Err(cursor.error(format!(
                 "CDR encapsulation kind {kind} is not plain CDR (0 big-endian or 1 little-endian)"
-            ))),
+            )))
+            }
         };
         cursor.base = 4;
     }

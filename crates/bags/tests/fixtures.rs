@@ -1,0 +1,320 @@
+//! The committed bags of `tests/fixtures`, written by Python's `rosbags`
+//! (`tools/make-bag-fixtures`) from the recordings beside them: every container and
+//! compression decodes, to the values of the recording it came from; broken copies of
+//! them are errors naming the file and the byte.
+
+use std::path::{Path, PathBuf};
+
+use bags::{BagError, Format, Value};
+
+fn fixtures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
+}
+
+/// Each fixture bag with its format.
+const BAGS: [(&str, Format); 3] = [
+    ("p01-d01.bz2.bag", Format::Ros1),
+    ("p01-d01.lz4.bag", Format::Ros1),
+    ("p01-d01-ros2", Format::Ros2Folder),
+];
+
+fn recording_frames(stem: &str) -> Vec<serde_json::Value> {
+    let text = std::fs::read_to_string(fixtures().join("recordings").join(format!("{stem}.jsonl")))
+        .unwrap();
+    text.lines()
+        .skip(1)
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect()
+}
+
+fn f64_at(value: &Value, path: &str) -> f64 {
+    value.lookup_one(path).unwrap().as_f64().unwrap()
+}
+
+#[test]
+fn every_format_lists_the_three_topics_with_their_counts() {
+    let frames = recording_frames("p01-d01").len() as u64;
+    for (name, format) in BAGS {
+        let bag = bags::open(&fixtures().join(name)).unwrap();
+        assert_eq!(bag.format(), format, "{name}");
+        let topics = bag.topics().unwrap();
+        let listed: Vec<(&str, Option<u64>)> = topics
+            .iter()
+            .map(|t| (t.name.as_str(), t.message_count))
+            .collect();
+        assert_eq!(
+            listed,
+            [
+                ("/demoplan/objects", Some(frames)),
+                ("/tf", Some(frames)),
+                ("/tf_static", Some(1))
+            ],
+            "{name}"
+        );
+        let objects = &topics[0];
+        assert!(
+            objects.type_name.ends_with("ObjectArray"),
+            "{name}: {}",
+            objects.type_name
+        );
+        assert!(
+            objects.definition.contains("demoplan_msgs/Relation"),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn the_custom_message_decodes_to_the_recording_it_came_from() {
+    let frames = recording_frames("p01-d01");
+    for (name, _) in BAGS {
+        let bag = bags::open(&fixtures().join(name)).unwrap();
+        let mut seen = 0;
+        for (message, frame) in bag
+            .messages(|t| t == "/demoplan/objects")
+            .unwrap()
+            .zip(&frames)
+        {
+            let message = message.unwrap();
+            assert_eq!(message.index, seen as u64);
+            let stamp = message
+                .value
+                .lookup_one("header.stamp")
+                .unwrap()
+                .as_nanos()
+                .unwrap();
+            let t = frame["t"].as_f64().unwrap();
+            assert!(
+                ((stamp - 1_700_000_000_000_000_000) as f64 / 1e9 - t).abs() < 1e-9,
+                "{name}: stamp {stamp} vs {t}"
+            );
+            assert_eq!(message.receive_time, stamp, "{name}");
+            let entities = frame["entities"].as_object().unwrap();
+            let objects = message.value.lookup("objects[]").unwrap();
+            assert_eq!(objects.len(), entities.len(), "{name} message {seen}");
+            for object in objects {
+                let entity_name = object.lookup_one("name").unwrap().as_str().unwrap();
+                let state = &entities[entity_name];
+                for (axis, at) in ["x", "y", "z"].iter().zip(0..) {
+                    let want = state["pos"][at].as_f64().unwrap();
+                    assert_eq!(
+                        f64_at(object, &format!("pose.position.{axis}")),
+                        want,
+                        "{name} {entity_name}"
+                    );
+                }
+                assert_eq!(
+                    f64_at(object, "pose.orientation.w"),
+                    state["rot"][3].as_f64().unwrap()
+                );
+                let velocity = object.lookup("velocity[].y").unwrap();
+                assert_eq!(velocity.len(), usize::from(state.get("vel").is_some()));
+                if let Some(grip) = state.get("grip") {
+                    // float32 on the wire: the recording's f32 value exactly.
+                    assert_eq!(
+                        f64_at(object, "grip[0]") as f32,
+                        grip.as_f64().unwrap() as f32
+                    );
+                }
+                let held = object.lookup_one("held").unwrap().as_str().unwrap();
+                assert_eq!(
+                    held,
+                    state.get("holding").and_then(|h| h.as_str()).unwrap_or("")
+                );
+            }
+            let contacts = message.value.lookup("contacts[].b").unwrap();
+            assert_eq!(
+                contacts.len(),
+                frame
+                    .get("contacts")
+                    .map_or(0, |c| c.as_array().unwrap().len())
+            );
+            seen += 1;
+        }
+        assert_eq!(seen, frames.len(), "{name}");
+    }
+}
+
+#[test]
+fn tf_decodes_the_same_from_every_container() {
+    let transforms = |name: &str| -> Vec<(i64, String, String, f64)> {
+        let bag = bags::open(&fixtures().join(name)).unwrap();
+        let mut out = Vec::new();
+        for message in bag.messages(|t| t == "/tf" || t == "/tf_static").unwrap() {
+            let message = message.unwrap();
+            for transform in message.value.lookup("transforms[]").unwrap() {
+                out.push((
+                    transform
+                        .lookup_one("header.stamp")
+                        .unwrap()
+                        .as_nanos()
+                        .unwrap(),
+                    transform
+                        .lookup_one("header.frame_id")
+                        .unwrap()
+                        .as_str()
+                        .unwrap()
+                        .to_string(),
+                    transform
+                        .lookup_one("child_frame_id")
+                        .unwrap()
+                        .as_str()
+                        .unwrap()
+                        .to_string(),
+                    f64_at(transform, "transform.rotation.z"),
+                ));
+            }
+        }
+        out
+    };
+    let ros1 = transforms("p01-d01.bz2.bag");
+    assert!(ros1.len() > 1000);
+    assert_eq!(ros1[0].1, "world");
+    assert_eq!(ros1[0].2, "tracker");
+    assert_eq!(transforms("p01-d01.lz4.bag"), ros1);
+    assert_eq!(transforms("p01-d01-ros2"), ros1);
+}
+
+/// A temporary folder, removed when dropped.
+struct TempDir(PathBuf);
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A copy of a fixture, changed by `patch`, in a temporary folder.
+fn broken(name: &str, patch: impl FnOnce(&mut Vec<u8>)) -> (TempDir, PathBuf) {
+    let dir = std::env::temp_dir().join(format!(
+        "bags-test-{}-{}",
+        std::process::id(),
+        rand_suffix()
+    ));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut bytes = std::fs::read(fixtures().join(name)).unwrap();
+    patch(&mut bytes);
+    let path = dir.join(Path::new(name).file_name().unwrap());
+    std::fs::write(&path, bytes).unwrap();
+    (TempDir(dir), path)
+}
+
+fn rand_suffix() -> u64 {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
+/// Reads everything, returning the first error.
+fn read_all(path: &Path) -> Result<usize, BagError> {
+    let bag = bags::open(path)?;
+    let mut n = 0;
+    for message in bag.messages(|_| true)? {
+        message?;
+        n += 1;
+    }
+    Ok(n)
+}
+
+fn find(bytes: &[u8], needle: &[u8]) -> usize {
+    bytes
+        .windows(needle.len())
+        .position(|w| w == needle)
+        .unwrap()
+}
+
+#[test]
+fn a_truncated_ros1_bag_is_an_error_naming_the_byte() {
+    let (_dir, path) = broken("p01-d01.bz2.bag", |b| b.truncate(b.len() / 2));
+    let err = read_all(&path).unwrap_err().to_string();
+    assert!(err.contains("p01-d01.bz2.bag"), "{err}");
+    assert!(
+        err.contains("truncated: the bag header puts the index at byte"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_damaged_chunk_is_an_error_naming_its_offset() {
+    for name in ["p01-d01.bz2.bag", "p01-d01.lz4.bag"] {
+        let mut chunk_at = 0;
+        let (_dir, path) = broken(name, |b| {
+            // Damage the compressed data of the first chunk, well inside it.
+            chunk_at = find(b, b"compression=");
+            let inside = chunk_at + 400;
+            for byte in &mut b[inside..inside + 64] {
+                *byte ^= 0x5a;
+            }
+        });
+        let err = read_all(&path).unwrap_err();
+        let text = err.to_string();
+        assert!(matches!(err, BagError::Corrupt { .. }), "{name}: {text}");
+        assert!(text.contains("chunk"), "{name}: {text}");
+        assert!(text.contains(name), "{text}");
+    }
+}
+
+#[test]
+fn an_unknown_chunk_compression_is_named() {
+    let (_dir, path) = broken("p01-d01.bz2.bag", |b| {
+        let at = find(b, b"compression=bz2") + "compression=".len();
+        b[at..at + 3].copy_from_slice(b"xz9");
+    });
+    let err = read_all(&path).unwrap_err().to_string();
+    assert!(
+        err.contains("chunk compression `xz9` is not supported (supported: none, bz2, lz4)"),
+        "{err}"
+    );
+    let mcap = "p01-d01-ros2/p01-d01-ros2.mcap";
+    let (_dir, path) = broken(mcap, |b| {
+        let at = find(b, b"zstd");
+        b[at..at + 4].copy_from_slice(b"zstx");
+    });
+    let err = read_all(&path).unwrap_err().to_string();
+    assert!(
+        err.contains("chunk compression `zstx` is not supported (supported: none, zstd, lz4)"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_truncated_mcap_file_is_an_error() {
+    let (_dir, path) = broken("p01-d01-ros2/p01-d01-ros2.mcap", |b| {
+        b.truncate(b.len() / 2)
+    });
+    let err = read_all(&path).unwrap_err();
+    assert!(matches!(err, BagError::Corrupt { .. }), "{err}");
+    assert!(err.to_string().contains("truncated"), "{err}");
+}
+
+#[test]
+fn empty_and_foreign_files_are_refused() {
+    let (_dir, path) = broken("p01-d01.bz2.bag", |b| b.clear());
+    assert_eq!(
+        bags::open(&path).unwrap_err().to_string(),
+        format!("{}: the file is empty", path.display())
+    );
+    let (_dir, path) = broken("recordings/p01-d01.jsonl", |_| {});
+    assert!(bags::open(&path)
+        .unwrap_err()
+        .to_string()
+        .contains("not a ROS 1 bag"));
+}
+
+#[test]
+fn a_ros2_folder_with_sqlite_storage_is_refused_by_name() {
+    let dir = std::env::temp_dir().join(format!("bags-test-{}-sqlite", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let metadata = std::fs::read_to_string(fixtures().join("p01-d01-ros2/metadata.yaml")).unwrap();
+    std::fs::write(
+        dir.join("metadata.yaml"),
+        metadata.replace("storage_identifier: mcap", "storage_identifier: sqlite3"),
+    )
+    .unwrap();
+    let err = bags::open(&dir).unwrap_err().to_string();
+    assert!(
+        err.contains("metadata.yaml: storage_identifier: `sqlite3` is not supported"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

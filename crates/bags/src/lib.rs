@@ -84,6 +84,17 @@ pub enum BagError {
 }
 
 impl BagError {
+    /// The message without the file's path in front (for callers that show the file
+    /// themselves).
+    pub fn detail(&self) -> String {
+        let full = self.to_string();
+        let prefix = format!("{}: ", self.path().display());
+        match full.strip_prefix(&prefix) {
+            Some(rest) => rest.to_string(),
+            None => full,
+        }
+    }
+
     /// The file the error is about.
     pub fn path(&self) -> &Path {
         match self {

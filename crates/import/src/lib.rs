@@ -53,6 +53,7 @@ mod axes;
 mod error;
 mod glob;
 mod mapping;
+pub mod ros;
 pub mod unity;
 
 pub use assemble::{

@@ -394,9 +394,11 @@ fn pose_of(value: &Value, field: &str) -> Result<Pose, String> {
         (Some(p), Some(r)) => (p, r),
         _ => match (value.field("translation"), value.field("rotation")) {
             (Some(p), Some(r)) => (p, r),
-            _ => return Err(format!(
+            _ => {
+                return Err(format!(
                 "`{field}` is not a pose (position and orientation, or translation and rotation)"
-            )),
+            ))
+            }
         },
     };
     Ok(Pose {

@@ -216,3 +216,46 @@ fn tf_alone_gives_the_poses_composed_through_the_tracker_frame() {
         }
     }
 }
+
+/// What `learn` makes of recordings: per operator (by rank and type) its count and cost.
+fn library(recordings: &[Recording]) -> Vec<(String, u32, u64, String)> {
+    let mut library = learn::Library::default();
+    for r in recordings {
+        learn::add_frames(
+            &mut library,
+            &r.header,
+            r.frames.clone(),
+            &grounding::GroundingConfig::default(),
+            &segment::ActivityTree::table_one(),
+            "",
+        );
+    }
+    library
+        .ranked()
+        .iter()
+        .map(|r| {
+            (
+                r.name(),
+                r.cost,
+                r.entry.count,
+                format!("{:?}", r.entry.operator),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn learn_gives_the_same_library_on_the_imported_object_lists() {
+    let originals: Vec<Recording> = ["p01-d01", "p01-d02"].map(original).into();
+    let want = library(&originals);
+    assert!(want.len() >= 4, "{want:?}");
+    for container in 0..3 {
+        let imported: Vec<Recording> = ["p01-d01", "p01-d02"]
+            .map(|stem| {
+                let (path, format) = &bags_of(stem)[container];
+                import_bag(path, &Mapping::from_toml(OBJECTS_MAPPING, *format).unwrap())
+            })
+            .into();
+        assert_eq!(library(&imported), want, "container {container}");
+    }
+}

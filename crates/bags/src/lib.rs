@@ -246,21 +246,32 @@ impl Bag {
             });
             entry.message_count = Some(entry.message_count.unwrap_or(0) + count);
         };
-        match self.format {
-            Format::Ros1 => {
-                let reader = ros1::Ros1Reader::open(&self.files[0])?;
-                for connection in reader.connections() {
-                    add(
-                        &connection.topic,
-                        connection.topic.message_count.unwrap_or(0),
-                    );
-                }
+        let mut counted = false;
+        if self.format == Format::Ros1 {
+            let reader = ros1::Ros1Reader::open(&self.files[0])?;
+            counted = reader
+                .connections()
+                .all(|c| c.topic.message_count.is_some());
+            for connection in reader.connections() {
+                add(
+                    &connection.topic,
+                    connection.topic.message_count.unwrap_or(0),
+                );
             }
-            Format::Mcap | Format::Ros2Folder => {
-                let mut source = self.source()?;
-                while let Some(raw) = source.next_raw()? {
-                    add(&raw.connection.topic, 1);
-                }
+        }
+        if !counted {
+            // Count by reading through: MCAP, or a ROS 1 bag whose index has no counts.
+            for topic in topics.values_mut() {
+                topic.message_count = Some(0);
+            }
+            let mut source = self.source()?;
+            while let Some(raw) = source.next_raw()? {
+                let topic = &raw.connection.topic;
+                let entry = topics.entry(topic.name.clone()).or_insert_with(|| Topic {
+                    message_count: Some(0),
+                    ..topic.clone()
+                });
+                entry.message_count = Some(entry.message_count.unwrap_or(0) + 1);
             }
         }
         Ok(topics.into_values().collect())

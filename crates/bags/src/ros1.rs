@@ -216,6 +216,7 @@ impl Ros1Reader {
         reader.index_pos = file_len;
         reader.seek(index_pos)?;
         let mut counts: HashMap<u32, u64> = HashMap::new();
+        let mut chunk_infos = 0;
         let mut connections = HashMap::new();
         while reader.pos < file_len {
             let offset = reader.pos;
@@ -227,6 +228,7 @@ impl Ros1Reader {
                     connections.insert(id, connection);
                 }
                 OP_CHUNK_INFO => {
+                    chunk_infos += 1;
                     if data.len() % 8 != 0 {
                         return Err(reader.corrupt(
                             offset,
@@ -243,7 +245,9 @@ impl Ros1Reader {
             }
         }
         for (id, mut connection) in connections {
-            connection.topic.message_count = Some(counts.get(&id).copied().unwrap_or(0));
+            // Without chunk infos (a bag of bare message records) the index gives no counts.
+            connection.topic.message_count =
+                (chunk_infos > 0).then(|| counts.get(&id).copied().unwrap_or(0));
             reader.connections.insert(id, Arc::new(connection));
         }
         reader.index_pos = index_pos;

@@ -3,6 +3,8 @@
 //! compression decodes, to the values of the recording it came from; broken copies of
 //! them are errors naming the file and the byte.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::path::{Path, PathBuf};
 
 use bags::{BagError, Format, Value};

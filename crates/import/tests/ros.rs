@@ -2,6 +2,8 @@
 //! (written by Python's `rosbags` from the simulated recordings beside them): the custom
 //! object-list message gives back every field of the recording, `/tf` alone its poses.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::path::{Path, PathBuf};
 
 use import::ros::RosBag;

@@ -3,6 +3,8 @@
 //! patched, or small uncompressed ROS 1 bags written by `BagWriter` with the definitions
 //! the fixtures carry.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::path::{Path, PathBuf};
 
 use import::ros::RosBag;

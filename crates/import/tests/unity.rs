@@ -84,7 +84,7 @@ fn converted_rotations_are_proper_and_agree_with_converted_vectors() {
         (0.5, -0.5, 0.5, 0.5),
         (0.0, 0.0, 1.0, 0.0),
     ] {
-        let n: f64 = (w * w + x * x + y * y + z * z).sqrt();
+        let n = f64::sqrt(w * w + x * x + y * y + z * z);
         let q = [w / n, x / n, y / n, z / n];
         let text = log(&[(0.0, vec![record("Cube_a", [0.0, 1.0, 0.0], q, STILL, "")])]);
         let (rec, _) = run(&text, &Mapping::default_for(Format::Unity)).unwrap();

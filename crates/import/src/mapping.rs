@@ -314,9 +314,11 @@ fn default_rules() -> Vec<EntityRule> {
         glob("*controller_l*", Role::LeftHand),
         glob("*lefthand*", Role::LeftHand),
         glob("*hand_l*", Role::LeftHand),
+        glob("*left_hand*", Role::LeftHand),
         glob("*controller_r*", Role::RightHand),
         glob("*righthand*", Role::RightHand),
         glob("*hand_r*", Role::RightHand),
+        glob("*right_hand*", Role::RightHand),
         glob("*cube*", Role::Cube),
         glob("*table*", Role::Table),
         glob("*camera*", Role::Ignore),
@@ -342,7 +344,7 @@ fn default_labels() -> BTreeMap<String, String> {
 
 impl Mapping {
     /// The defaults for a format: entity kinds from name parts (`Controller_L`,
-    /// `LeftHand`, `Hand_L`: left hand; `..._R`, `RightHand`: right hand; `Cube`; `Table`;
+    /// `LeftHand`, `Hand_L`, `left_hand`: left hand; the same with `R`/`Right`: right hand; `Cube`; `Table`;
     /// `Camera`, `Origin`, `Marker` ignored), 5 cm cubes, the label map. Unity: Unity axes,
     /// `[w, x, y, z]`, grasps from events, an entity missing from a step is missing
     /// (`max_age = 0`). Bags: REP 103 axes, `[x, y, z, w]`, grasps from geometry,

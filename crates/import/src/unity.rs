@@ -12,10 +12,11 @@
 //! `"Infinity"` and `"-Infinity"` (as .NET serialisers do), so that such a pose is
 //! reported as a non-finite pose of its entity rather than as a syntax error.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::io::{BufReader, Read};
+use std::rc::Rc;
 
 use rustc_hash::FxHashMap;
 use serde::de::{self, DeserializeSeed, Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
@@ -77,10 +78,19 @@ where
     }
 
     fn pass(&mut self, sink: &mut dyn Sink) -> Result<(), ImportError> {
-        let input = BufReader::with_capacity(1 << 16, (self.open)()?);
+        let lines = Rc::new(Cell::new(0u64));
+        // serde_json reads a byte at a time and looks ahead by at most one, so counting
+        // the newlines it has been given tells where each step ends.
+        let input = LineCounter {
+            inner: BufReader::with_capacity(1 << 16, (self.open)()?),
+            lines: Rc::clone(&lines),
+        };
         let state = RefCell::new(PassState {
             sink,
+            lines: Rc::clone(&lines),
+            step_end_line: 0,
             step: 0,
+            in_log: false,
             problem: None,
             holding: FxHashMap::default(),
             observation: Observation::default(),
@@ -100,10 +110,16 @@ where
                 if e.is_io() {
                     return Err(ImportError::Io(std::io::Error::other(e.to_string())));
                 }
+                // A problem of the step's content is found once the step is read: the
+                // position is then the step's end, and only its line is meaningful.
                 let location = Location {
-                    step: Some(state.step),
-                    line: Some(e.line() as u64),
-                    column: Some(e.column() as u64),
+                    step: state.in_log.then_some(state.step),
+                    line: Some(if state.problem.is_some() {
+                        state.step_end_line
+                    } else {
+                        e.line() as u64
+                    }),
+                    column: state.problem.is_none().then_some(e.column() as u64),
                     ..Location::default()
                 };
                 let problem = state.problem.unwrap_or_else(|| {
@@ -114,6 +130,11 @@ where
                     };
                     Problem::new(if e.is_eof() {
                         format!("{message} (truncated file?)")
+                    } else if e.is_syntax() {
+                        format!(
+                            "not valid JSON: {message} (non-finite numbers must be written as \
+                             the strings \"NaN\", \"Infinity\" or \"-Infinity\")"
+                        )
                     } else {
                         message
                     })
@@ -136,6 +157,12 @@ struct PassState<'s> {
     sink: &'s mut dyn Sink,
     /// Index of the step being read.
     step: u64,
+    /// Whether reading has reached the `log` list.
+    in_log: bool,
+    /// Newlines read so far.
+    lines: Rc<Cell<u64>>,
+    /// The line on which the last step read ends (where its problems are reported).
+    step_end_line: u64,
     /// A problem the sink or the step's checks raised (the JSON error carries only the
     /// position).
     problem: Option<Problem>,
@@ -303,6 +330,7 @@ impl<'de> Visitor<'de> for TopLevel<'_, '_> {
                         return Err(de::Error::duplicate_field("log"));
                     }
                     map.next_value_seed(Log { state: self.state })?;
+                    self.state.borrow_mut().in_log = false;
                     log = true;
                 }
                 _ => {
@@ -334,8 +362,10 @@ impl<'de> Visitor<'de> for Log<'_, '_> {
         f.write_str("a list of steps `{\"time\", \"logStep\"}`")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
+        self.state.borrow_mut().in_log = true;
         while let Some(step) = seq.next_element::<Step>()? {
             let mut state = self.state.borrow_mut();
+            state.step_end_line = state.lines.get() + 1;
             if let Err(p) = state.step(step) {
                 let message = p.message.clone();
                 state.problem = Some(p);
@@ -344,5 +374,20 @@ impl<'de> Visitor<'de> for Log<'_, '_> {
             state.step += 1;
         }
         Ok(())
+    }
+}
+
+/// Counts the newlines read through it.
+struct LineCounter<R> {
+    inner: R,
+    lines: Rc<Cell<u64>>,
+}
+
+impl<R: Read> Read for LineCounter<R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        let newlines = buf[..n].iter().filter(|&&b| b == b'\n').count() as u64;
+        self.lines.set(self.lines.get() + newlines);
+        Ok(n)
     }
 }

@@ -160,6 +160,20 @@ pub struct Message {
     pub value: Value,
 }
 
+/// What the readers read from: a file, or bytes in memory.
+pub(crate) trait Input: std::io::Read + std::io::Seek {}
+
+impl<T: std::io::Read + std::io::Seek> Input for T {}
+
+/// Where a bag's bytes are.
+#[derive(Debug, Clone)]
+enum Storage {
+    /// The files (one, or a ROS 2 folder's), in reading order.
+    Files(Vec<PathBuf>),
+    /// One bag or MCAP file in memory.
+    Memory(Arc<[u8]>),
+}
+
 /// The container formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
@@ -174,7 +188,18 @@ pub enum Format {
 pub struct Bag {
     path: PathBuf,
     format: Format,
-    files: Vec<PathBuf>,
+    storage: Storage,
+}
+
+/// The container format the first bytes of a file announce, if they announce one.
+pub fn sniff(start: &[u8]) -> Option<Format> {
+    if ros1::is_ros1(start) {
+        Some(Format::Ros1)
+    } else if start.starts_with(mcap_file::MAGIC) {
+        Some(Format::Mcap)
+    } else {
+        None
+    }
 }
 
 /// Opens a ROS 1 bag, an MCAP file, or a ROS 2 bag folder (or its `metadata.yaml`).
@@ -191,7 +216,7 @@ pub fn open(path: &Path) -> Result<Bag, BagError> {
         return Ok(Bag {
             path: folder,
             format: Format::Ros2Folder,
-            files,
+            storage: Storage::Files(files),
         });
     }
     let io = |source| BagError::Io {
@@ -222,7 +247,31 @@ pub fn open(path: &Path) -> Result<Bag, BagError> {
     Ok(Bag {
         path: path.to_path_buf(),
         format,
-        files: vec![path.to_path_buf()],
+        storage: Storage::Files(vec![path.to_path_buf()]),
+    })
+}
+
+/// A ROS 1 bag or MCAP file held in memory; `name` stands for it in errors.
+pub fn from_bytes(name: &Path, bytes: Vec<u8>) -> Result<Bag, BagError> {
+    let format = match sniff(&bytes) {
+        Some(format) => format,
+        None if bytes.is_empty() => {
+            return Err(BagError::Format {
+                path: name.to_path_buf(),
+                what: "the file is empty".into(),
+            })
+        }
+        None => {
+            return Err(BagError::Format {
+                path: name.to_path_buf(),
+                what: "not a ROS 1 bag (`#ROSBAG V2.0`) or an MCAP file".into(),
+            })
+        }
+    };
+    Ok(Bag {
+        path: name.to_path_buf(),
+        format,
+        storage: Storage::Memory(Arc::from(bytes)),
     })
 }
 
@@ -248,7 +297,7 @@ impl Bag {
         };
         let mut counted = false;
         if self.format == Format::Ros1 {
-            let reader = ros1::Ros1Reader::open(&self.files[0])?;
+            let reader = self.ros1_reader()?;
             counted = reader
                 .connections()
                 .all(|c| c.topic.message_count.is_some());
@@ -288,14 +337,53 @@ impl Bag {
         })
     }
 
+    fn ros1_reader(&self) -> Result<ros1::Ros1Reader, BagError> {
+        let (input, len) = match &self.storage {
+            Storage::Memory(bytes) => (open_memory(bytes), bytes.len() as u64),
+            Storage::Files(files) => {
+                let path = files.first().unwrap_or(&self.path);
+                let io = |source| BagError::Io {
+                    path: path.clone(),
+                    source,
+                };
+                let file = std::fs::File::open(path).map_err(io)?;
+                let len = file.metadata().map_err(io)?.len();
+                (Box::new(file) as Box<dyn Input>, len)
+            }
+        };
+        ros1::Ros1Reader::new(&self.path, input, len)
+    }
+
     fn source(&self) -> Result<Source, BagError> {
-        Ok(match self.format {
-            Format::Ros1 => Source::Ros1(Box::new(ros1::Ros1Reader::open(&self.files[0])?)),
-            Format::Mcap | Format::Ros2Folder => Source::Mcap {
-                files: self.files.iter().rev().cloned().collect(),
+        if self.format == Format::Ros1 {
+            return Ok(Source::Ros1(Box::new(self.ros1_reader()?)));
+        }
+        Ok(match &self.storage {
+            Storage::Files(files) => Source::Mcap {
+                files: files.iter().rev().cloned().collect(),
                 current: None,
             },
+            Storage::Memory(bytes) => Source::Mcap {
+                files: Vec::new(),
+                current: Some(Box::new(mcap_file::McapReader::new(
+                    &self.path,
+                    open_memory(bytes),
+                ))),
+            },
         })
+    }
+}
+
+/// Bytes in memory as an input (shared, not copied).
+fn open_memory(bytes: &Arc<[u8]>) -> Box<dyn Input> {
+    Box::new(std::io::Cursor::new(SharedBytes(bytes.clone())))
+}
+
+struct SharedBytes(Arc<[u8]>);
+
+impl AsRef<[u8]> for SharedBytes {
+    fn as_ref(&self) -> &[u8] {
+        &self.0
     }
 }
 
@@ -319,8 +407,18 @@ impl Source {
                     }
                 }
                 match files.pop() {
-                    Some(file) => *current = Some(Box::new(mcap_file::McapReader::open(&file)?)),
-                    None => return Ok(None),
+                    Some(path) => {
+                        let file = std::fs::File::open(&path).map_err(|source| BagError::Io {
+                            path: path.clone(),
+                            source,
+                        })?;
+                        *current =
+                            Some(Box::new(mcap_file::McapReader::new(&path, Box::new(file))));
+                    }
+                    None => {
+                        *current = None;
+                        return Ok(None);
+                    }
                 }
             },
         }

@@ -16,7 +16,7 @@ pub const MAGIC: &[u8] = b"\x89MCAP0\r\n";
 
 pub struct McapReader {
     path: PathBuf,
-    file: BufReader<std::fs::File>,
+    file: BufReader<Box<dyn crate::Input>>,
     reader: LinearReader,
     /// Bytes handed to the reader so far: where in the file an error was found.
     consumed: u64,
@@ -29,19 +29,16 @@ impl McapReader {
         &self.path
     }
 
-    pub fn open(path: &Path) -> Result<McapReader, BagError> {
-        let file = std::fs::File::open(path).map_err(|source| BagError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        Ok(McapReader {
+    /// Reads the MCAP file `file`; `path` names it in errors.
+    pub fn new(path: &Path, file: Box<dyn crate::Input>) -> McapReader {
+        McapReader {
             path: path.to_path_buf(),
             file: BufReader::with_capacity(1 << 16, file),
             reader: LinearReader::new(),
             consumed: 0,
             schemas: HashMap::new(),
             channels: HashMap::new(),
-        })
+        }
     }
 
     fn error(&self, error: mcap::McapError) -> BagError {

@@ -144,7 +144,7 @@ fn connection(
 
 pub struct Ros1Reader {
     path: PathBuf,
-    file: BufReader<std::fs::File>,
+    file: BufReader<Box<dyn crate::Input>>,
     /// Position of the next record in the file.
     pos: u64,
     /// Where the chunk section ends (the index starts).
@@ -161,13 +161,13 @@ impl Ros1Reader {
         &self.path
     }
 
-    pub fn open(path: &Path) -> Result<Ros1Reader, BagError> {
-        let io = |source| BagError::Io {
-            path: path.to_path_buf(),
-            source,
-        };
-        let file = std::fs::File::open(path).map_err(io)?;
-        let file_len = file.metadata().map_err(io)?.len();
+    /// Reads the bag `input` of `file_len` bytes; `path` names it in errors.
+    pub fn new(
+        path: &Path,
+        input: Box<dyn crate::Input>,
+        file_len: u64,
+    ) -> Result<Ros1Reader, BagError> {
+        let file = input;
         let mut reader = Ros1Reader {
             path: path.to_path_buf(),
             file: BufReader::with_capacity(1 << 16, file),

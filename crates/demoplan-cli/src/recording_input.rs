@@ -35,11 +35,25 @@ pub enum SourceKind {
     Native,
     /// A Unity VR playback log.
     Unity,
+    /// A ROS bag: a ROS 1 bag, an MCAP file or a ROS 2 bag folder.
+    Bag(import::Format),
 }
 
 /// Tells a Unity log from a native recording by its content (a recording's header names
 /// its format on the first line). A missing file is a command line error (36).
 pub fn source_kind(path: &Path) -> Result<SourceKind, Failure> {
+    if path.is_dir() {
+        return match import::ros::bag_format(path, &[]) {
+            Some(format) => Ok(SourceKind::Bag(format)),
+            None => Err(Failure::plain(
+                ExitCode::USAGE,
+                format!(
+                    "{} is a folder, not a recording (a ROS 2 bag folder has a metadata.yaml)",
+                    path.display()
+                ),
+            )),
+        };
+    }
     let mut start = Vec::with_capacity(4096);
     File::open(path)
         .and_then(|f| f.take(4096).read_to_end(&mut start))
@@ -49,6 +63,9 @@ pub fn source_kind(path: &Path) -> Result<SourceKind, Failure> {
                 format!("cannot read {}: {e}", path.display()),
             )
         })?;
+    if let Some(format) = import::ros::bag_format(path, &start) {
+        return Ok(SourceKind::Bag(format));
+    }
     let native = String::from_utf8_lossy(&start).contains(recording::FORMAT_NAME);
     Ok(if !native && import::unity::looks_like_unity_log(&start) {
         SourceKind::Unity
@@ -112,6 +129,19 @@ pub fn import_failure(path: &Path, error: &import::ImportError) -> Failure {
 /// into memory first, with the `--mapping` file or the defaults. A missing file is a
 /// command line error (36); a malformed header or source an input error (31).
 pub fn open(path: &Path) -> Result<recording::Reader<Box<dyn BufRead>>, Failure> {
+    if let SourceKind::Bag(format) = source_kind(path)? {
+        let mapping = mapping(None, format)?;
+        let id = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "imported".to_string());
+        let mut source =
+            import::ros::RosBag::open(path, &mapping).map_err(|e| import_failure(path, &e))?;
+        let (bytes, _, _) = import::import(&mut source, &mapping, &id, Vec::new())
+            .map_err(|e| import_failure(path, &e))?;
+        let input: Box<dyn BufRead> = Box::new(std::io::Cursor::new(bytes));
+        return recording::Reader::new(input).map_err(|e| recording_failure(path, &e));
+    }
     if source_kind(path)? == SourceKind::Unity {
         let mapping = mapping(None, import::Format::Unity)?;
         let id = path

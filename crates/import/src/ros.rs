@@ -72,6 +72,17 @@ pub struct RosBag {
     meta: BTreeMap<String, String>,
 }
 
+/// The format of a bag, from the first bytes of a file or a folder with `metadata.yaml`.
+pub fn bag_format(path: &Path, start: &[u8]) -> Option<Format> {
+    if path.is_dir() {
+        return path.join("metadata.yaml").is_file().then_some(Format::Ros2);
+    }
+    match bags::sniff(start)? {
+        bags::Format::Ros1 => Some(Format::Ros1),
+        bags::Format::Mcap | bags::Format::Ros2Folder => Some(Format::Ros2),
+    }
+}
+
 /// A bag's error as an import error: a message's topic and index as its location.
 pub fn bag_error(error: BagError) -> ImportError {
     match &error {

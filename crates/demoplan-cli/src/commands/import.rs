@@ -27,12 +27,13 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     let mut plan = Vec::new();
     for source in &args.sources {
         let kind = recording_input::source_kind(source)?;
-        if kind != SourceKind::Unity {
+        if kind == SourceKind::Native {
             return Err(Failure::plain(
                 ExitCode::INPUT_ERROR,
                 format!(
                     "{}: not a source import reads (a Unity playback log: a JSON object with \
-                     `playbackTimestepMilliseconds` and `log`)",
+                     `playbackTimestepMilliseconds` and `log`; a ROS 1 bag, an MCAP file or a \
+                     ROS 2 bag folder)",
                     source.display()
                 ),
             ));
@@ -54,9 +55,20 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
                 ),
             ));
         }
-        plan.push((source, stem, out));
+        plan.push((source, kind, stem, out));
     }
-    let mapping = recording_input::mapping(args.mapping.as_deref(), import::Format::Unity)?;
+    // The mapping of each source format met (a file's keys over that format's defaults).
+    let mut mappings: BTreeMap<&'static str, import::Mapping> = BTreeMap::new();
+    for (_, kind, _, _) in &plan {
+        let format = match kind {
+            SourceKind::Bag(format) => *format,
+            _ => import::Format::Unity,
+        };
+        if !mappings.contains_key(format.name()) {
+            let mapping = recording_input::mapping(args.mapping.as_deref(), format)?;
+            mappings.insert(format.name(), mapping);
+        }
+    }
     std::fs::create_dir_all(&args.out).map_err(|e| {
         Failure::plain(
             ExitCode::CRITICAL_ERROR,
@@ -65,17 +77,30 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     })?;
 
     let mut text = String::new();
-    for (source, stem, out) in &plan {
+    for (source, kind, stem, out) in &plan {
         let size = std::fs::metadata(source).map(|m| m.len()).unwrap_or(0);
         let progress = Progress::new(source, size);
-        let mut unity = import::unity::UnityLog::new(|| {
-            let file = std::fs::File::open(source)?;
-            Ok(progress.reader(file))
-        });
+        let mut unity;
+        let mut bag;
+        let (source_of_events, mapping): (&mut dyn import::Source, &import::Mapping) = match kind {
+            SourceKind::Bag(format) => {
+                let mapping = &mappings[format.name()];
+                bag = import::ros::RosBag::open(source, mapping)
+                    .map_err(|e| recording_input::import_failure(source, &e))?;
+                (&mut bag, mapping)
+            }
+            _ => {
+                unity = import::unity::UnityLog::new(|| {
+                    let file = std::fs::File::open(source)?;
+                    Ok(progress.reader(file))
+                });
+                (&mut unity, &mappings[import::Format::Unity.name()])
+            }
+        };
         let mut failure = None;
         let mut result = None;
         let written = output::write_atomically_with(out, |w| {
-            match import::import(&mut unity, &mapping, stem, w) {
+            match import::import(source_of_events, mapping, stem, w) {
                 Ok((_, header, report)) => {
                     result = Some((header, report));
                     Ok(())
@@ -99,11 +124,18 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
             let _ = writeln!(text, "  {line}");
         }
     }
-    let _ = writeln!(
-        text,
-        "\nmapping used (save it, edit it and pass it with --mapping):\n"
-    );
-    text.push_str(&mapping.to_toml());
+    for (format, mapping) in &mappings {
+        let which = if mappings.len() > 1 {
+            format!(" for {format} sources")
+        } else {
+            String::new()
+        };
+        let _ = writeln!(
+            text,
+            "\nmapping used{which} (save it, edit it and pass it with --mapping):\n"
+        );
+        text.push_str(&mapping.to_toml());
+    }
     print!("{text}");
     if args.peak_heap {
         eprintln!("peak heap: {} bytes", crate::memory::peak_heap());

@@ -1,0 +1,188 @@
+//! `demoplan import` and `inspect` on ROS bags: the committed fixtures of
+//! `crates/bags/tests/fixtures` import; broken copies of them exit 31 with a message naming
+//! the file and the place, and leave no output behind. Snapshots (insta) pin the messages.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn demoplan() -> Command {
+    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
+    cmd.env("NO_COLOR", "1");
+    cmd
+}
+
+fn bag_fixtures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../bags/tests/fixtures")
+}
+
+/// A temporary folder, removed when dropped.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(case: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("demoplan-bags-{}-{case}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Exit code, standard output and standard error, with the temporary folder as `[TMP]`.
+fn transcript(out: &Output, tmp: &Path) -> String {
+    let text = format!(
+        "exit: {}\n--- stdout\n{}--- stderr\n{}",
+        out.status
+            .code()
+            .map_or("signal".to_string(), |c| c.to_string()),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    text.replace(&tmp.display().to_string(), "[TMP]")
+}
+
+#[test]
+fn every_container_imports_with_its_report() {
+    let tmp = TempDir::new("good");
+    let out_dir = tmp.0.join("out");
+    let sources =
+        ["p01-d01.bz2.bag", "p01-d01.lz4.bag", "p01-d01-ros2"].map(|s| bag_fixtures().join(s));
+    let out = demoplan()
+        .arg("import")
+        .args(&sources)
+        .arg("-o")
+        .arg(&out_dir)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(
+        stdout.matches("1150 frames over 12.844 s").count(),
+        3,
+        "{stdout}"
+    );
+    assert!(stdout.contains("Hand_R -> right_hand"), "{stdout}");
+    assert!(
+        stdout.contains("tracker_origin (glob \"*origin*\" says ignore)"),
+        "{stdout}"
+    );
+    for stem in ["p01-d01.bz2", "p01-d01.lz4", "p01-d01-ros2"] {
+        let text = std::fs::read_to_string(out_dir.join(format!("{stem}.jsonl"))).unwrap();
+        assert_eq!(text.lines().count(), 1151, "{stem}: header and 1150 frames");
+    }
+    // inspect takes the bag itself.
+    let out = demoplan()
+        .arg("inspect")
+        .arg(bag_fixtures().join("p01-d01.lz4.bag"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("tf_root=world"));
+}
+
+/// Writes `bytes` as `name` in `dir`.
+fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, bytes).unwrap();
+    path
+}
+
+fn find(bytes: &[u8], needle: &[u8]) -> usize {
+    bytes
+        .windows(needle.len())
+        .position(|w| w == needle)
+        .unwrap()
+}
+
+#[test]
+fn broken_bags_exit_31_naming_file_and_place_and_write_nothing() {
+    let tmp = TempDir::new("broken");
+    let good = std::fs::read(bag_fixtures().join("p01-d01.bz2.bag")).unwrap();
+    let mcap = std::fs::read(bag_fixtures().join("p01-d01-ros2/p01-d01-ros2.mcap")).unwrap();
+    let mut unknown = good.clone();
+    let at = find(&unknown, b"compression=bz2") + "compression=".len();
+    unknown[at..at + 3].copy_from_slice(b"xz9");
+    let mut damaged = good.clone();
+    for byte in &mut damaged[4500..4600] {
+        *byte ^= 0x5a;
+    }
+    let objects = "[bag]\nclock_topic = \"/demoplan/objects\"\n[bag.objects]\ntopic = \"/demoplan/objects\"\nlist = \"objects\"\nname = \"name\"\npose = \"pos\"\n";
+    let cases: Vec<(&str, PathBuf, Option<&str>)> = vec![
+        (
+            "cut-bag",
+            write(&tmp.0, "cut.bag", &good[..good.len() / 2]),
+            None,
+        ),
+        (
+            "cut-mcap",
+            write(&tmp.0, "cut.mcap", &mcap[..mcap.len() / 2]),
+            None,
+        ),
+        (
+            "unknown-compression",
+            write(&tmp.0, "unknown.bag", &unknown),
+            None,
+        ),
+        (
+            "damaged-chunk",
+            write(&tmp.0, "damaged.bag", &damaged),
+            None,
+        ),
+        (
+            "empty-file",
+            write(&tmp.0, "empty.bag", b"#ROSBAG V2.0\n"),
+            None,
+        ),
+        (
+            "missing-topic",
+            bag_fixtures().join("p01-d01.bz2.bag"),
+            Some("[bag]\ntopics = [\"/cameras/pose\"]\n"),
+        ),
+        (
+            "missing-field",
+            bag_fixtures().join("p01-d01-ros2"),
+            Some(objects),
+        ),
+    ];
+    for (case, source, mapping) in cases {
+        let out_dir = tmp.0.join(format!("out-{case}"));
+        let mut cmd = demoplan();
+        cmd.arg("import").arg(&source).arg("-o").arg(&out_dir);
+        if let Some(text) = mapping {
+            cmd.arg("--mapping")
+                .arg(write(&tmp.0, &format!("{case}.toml"), text.as_bytes()));
+        }
+        let out = cmd.output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(31),
+            "{case}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let name = source.file_name().unwrap().to_string_lossy();
+        assert!(
+            stderr.contains(&*name),
+            "{case}: the message names the file: {stderr}"
+        );
+        let written: Vec<_> = std::fs::read_dir(&out_dir)
+            .map(|d| d.flatten().collect())
+            .unwrap_or_default();
+        assert!(written.is_empty(), "{case}: left {written:?}");
+        let text =
+            transcript(&out, &tmp.0).replace(&bag_fixtures().display().to_string(), "[FIXTURES]");
+        insta::assert_snapshot!(format!("bag-{case}"), text);
+    }
+}

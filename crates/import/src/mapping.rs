@@ -420,6 +420,16 @@ impl Mapping {
             }
             m.bag.objects = bag.objects.or(m.bag.objects);
         }
+        // Bags: grasps and contacts come from geometry unless the object list names a
+        // field for them (and the file does not choose otherwise).
+        if let Some(objects) = &m.bag.objects {
+            if file.grasps.is_none() && (objects.held.is_some() || objects.grabbed_by.is_some()) {
+                m.grasps = GraspSource::Field;
+            }
+            if file.contacts.is_none() && objects.contacts.is_some() {
+                m.contacts = ContactSource::Reported;
+            }
+        }
         for (i, rule) in file.entities.iter().enumerate() {
             check_rule(text, i, rule)?;
         }

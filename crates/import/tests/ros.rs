@@ -34,11 +34,9 @@ fn import_bag(path: &Path, mapping: &Mapping) -> Recording {
     Recording::read(&bytes[..]).unwrap()
 }
 
-/// The mapping of the fixtures' object list: every field it has.
+/// The mapping of the fixtures' object list: every field it has. Grasps and contacts
+/// then come from its fields (`held`, `grabbed_by`, `contacts`) without saying so.
 const OBJECTS_MAPPING: &str = r#"
-grasps = "field"
-contacts = "reported"
-
 [bag]
 clock_topic = "/demoplan/objects"
 
@@ -260,4 +258,17 @@ fn learn_gives_the_same_library_on_the_imported_object_lists() {
             .into();
         assert_eq!(library(&imported), want, "container {container}");
     }
+}
+
+#[test]
+fn naming_grasp_and_contact_fields_makes_them_the_source() {
+    let mapping = Mapping::from_toml(OBJECTS_MAPPING, Format::Ros2).unwrap();
+    assert_eq!(mapping.grasps, import::GraspSource::Field);
+    assert_eq!(mapping.contacts, import::ContactSource::Reported);
+    let chosen = format!("grasps = \"geometry\"\ncontacts = \"geometry\"\n{OBJECTS_MAPPING}");
+    let mapping = Mapping::from_toml(&chosen, Format::Ros2).unwrap();
+    assert_eq!(mapping.grasps, import::GraspSource::Geometry);
+    assert_eq!(mapping.contacts, import::ContactSource::Geometry);
+    let tf_only = Mapping::default_for(Format::Ros1);
+    assert_eq!(tf_only.grasps, import::GraspSource::Geometry);
 }

@@ -37,6 +37,11 @@ pub use decode::{decode, DecodeError, Encoding};
 pub use definition::{DefinitionError, Schema};
 pub use value::{Message as MessageValue, Value};
 
+/// Largest chunk (decompressed) or record accepted, in bytes. Recorders write chunks of
+/// 768 KiB (`rosbag record`), 1 MiB (rosbags) or a few MiB (MCAP writers); a chunk or
+/// record claiming more than this is taken for corrupt rather than allocated.
+pub const MAX_RECORD: u64 = 256 << 20;
+
 /// Something wrong with a bag: always the file, and where in it.
 #[derive(Debug, thiserror::Error)]
 pub enum BagError {

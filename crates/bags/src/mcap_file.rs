@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use mcap::records::Record;
-use mcap::sans_io::{LinearReadEvent, LinearReader};
+use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
 
 use crate::decode::Encoding;
 use crate::{BagError, Connection, RawMessage, Topic};
@@ -34,7 +34,14 @@ impl McapReader {
         McapReader {
             path: path.to_path_buf(),
             file: BufReader::with_capacity(1 << 16, file),
-            reader: LinearReader::new(),
+            // A chunk or record larger than this is taken for corrupt rather than
+            // allocated (the reader would otherwise reserve a chunk's stated size), and chunk
+            // CRCs are checked so that a damaged uncompressed chunk is an error.
+            reader: LinearReader::new_with_options(
+                LinearReaderOptions::default()
+                    .with_record_length_limit(crate::MAX_RECORD as usize)
+                    .with_validate_chunk_crcs(true),
+            ),
             consumed: 0,
             schemas: HashMap::new(),
             channels: HashMap::new(),

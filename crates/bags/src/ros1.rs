@@ -24,9 +24,8 @@ const OP_INDEX: u8 = 0x04;
 const OP_CHUNK: u8 = 0x05;
 const OP_CHUNK_INFO: u8 = 0x06;
 const OP_CONNECTION: u8 = 0x07;
-/// Largest decompressed chunk accepted. Recorders write chunks of 768 KiB by default and
-/// rosbags of 1 MiB; a chunk claiming more than this is taken for corrupt.
-const MAX_CHUNK: u64 = 256 << 20;
+/// Largest decompressed chunk accepted.
+const MAX_CHUNK: u64 = crate::MAX_RECORD;
 /// Largest record header accepted (headers hold a few short fields, or a connection's
 /// definition).
 const MAX_HEADER: u64 = 16 << 20;

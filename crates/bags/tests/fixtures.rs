@@ -345,3 +345,62 @@ fn a_ros2_folder_with_sqlite_storage_is_refused_by_name() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Every message of a bag in memory, or its first error.
+fn read_bytes(bytes: Vec<u8>) -> Result<usize, BagError> {
+    let bag = bags::from_bytes(Path::new("mem.bag"), bytes)?;
+    bag.topics()?;
+    let mut n = 0;
+    for message in bag.messages(|_| true)? {
+        message?;
+        n += 1;
+    }
+    Ok(n)
+}
+
+#[test]
+fn a_file_cut_anywhere_is_an_error_never_a_panic() {
+    for name in [
+        "p01-d02.bz2.bag",
+        "p01-d02.lz4.bag",
+        "p01-d02-ros2/p01-d02-ros2.mcap",
+    ] {
+        let bytes = std::fs::read(fixtures().join(name)).unwrap();
+        assert!(read_bytes(bytes.clone()).is_ok(), "{name} reads whole");
+        for cut in (1..48).map(|k| bytes.len() * k / 48) {
+            let result = read_bytes(bytes[..cut].to_vec());
+            assert!(
+                result.is_err(),
+                "{name} cut at byte {cut} read as {result:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn flipped_bytes_give_errors_or_messages_never_a_panic() {
+    // A fixed xorshift stream: the same flips every run.
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    for name in [
+        "p01-d02.bz2.bag",
+        "p01-d02.lz4.bag",
+        "p01-d02-ros2/p01-d02-ros2.mcap",
+    ] {
+        let bytes = std::fs::read(fixtures().join(name)).unwrap();
+        for _ in 0..40 {
+            let mut damaged = bytes.clone();
+            for _ in 0..4 {
+                let at = (next() % damaged.len() as u64) as usize;
+                damaged[at] ^= 1 << (next() % 8);
+            }
+            // Either outcome is fine; a panic fails the test.
+            let _ = read_bytes(damaged);
+        }
+    }
+}

@@ -245,7 +245,9 @@ pub enum Command {
     /// atomically and durably; learners writing one library take turns through its lock
     /// file (FILE.lock), so none loses another's counts.
     Learn {
-        /// Recordings (JSON Lines) or Unity playback logs.
+        /// Recordings (JSON Lines) or Unity playback logs; a folder gives its recordings
+        /// (not the simulator's *.truth.jsonl) and Unity logs, a simulation.json the
+        /// recordings it lists.
         #[arg(value_name = "RECORDING", required = true)]
         files: Vec<PathBuf>,
         /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:

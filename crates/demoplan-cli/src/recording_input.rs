@@ -313,6 +313,74 @@ impl Diagnostic for RecordingDiagnostic {
     }
 }
 
+/// The recordings named on a command line, with folders and simulation manifests
+/// expanded: a folder gives its native recordings (`*.jsonl`, not the simulator's
+/// `*.truth.jsonl`) and its Unity logs (`*.json` told by content), sorted by name; a
+/// `simulation.json` (format `demoplan-simulation`) gives the recordings it lists, beside
+/// it. Other files are kept as they are.
+pub fn expand_recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
+    let mut out = Vec::new();
+    for path in paths {
+        if path.is_dir() {
+            let entries = std::fs::read_dir(path).map_err(|e| {
+                Failure::plain(
+                    ExitCode::USAGE,
+                    format!("cannot read {}: {e}", path.display()),
+                )
+            })?;
+            let mut found = Vec::new();
+            for entry in entries.flatten() {
+                let p = entry.path();
+                let name = entry.file_name().to_string_lossy().into_owned();
+                let wanted = if name.ends_with(".truth.jsonl") {
+                    false
+                } else if name.ends_with(".jsonl") {
+                    true
+                } else {
+                    name.ends_with(".json") && p.is_file() && source_kind(&p)? == SourceKind::Unity
+                };
+                if wanted {
+                    found.push(p);
+                }
+            }
+            found.sort();
+            out.extend(found);
+        } else if let Some(listed) = simulation_manifest(path)? {
+            out.extend(listed);
+        } else {
+            out.push(path.clone());
+        }
+    }
+    Ok(out)
+}
+
+/// The recordings a simulation manifest lists, or `None` if `path` is not one.
+fn simulation_manifest(path: &Path) -> Result<Option<Vec<PathBuf>>, Failure> {
+    if path.file_name().is_none_or(|n| n != "simulation.json") {
+        return Ok(None);
+    }
+    let text = crate::input::read_text(path)?;
+    let Ok(value) = serde_json::from_str::<serde_json::Value>(&text) else {
+        return Ok(None);
+    };
+    if value.get("format").and_then(|f| f.as_str()) != Some("demoplan-simulation") {
+        return Ok(None);
+    }
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let listed = value
+        .get("recordings")
+        .and_then(|r| r.as_array())
+        .map(|items| {
+            items
+                .iter()
+                .filter_map(|r| r.get("recording")?.as_str())
+                .map(|name| dir.join(name))
+                .collect()
+        })
+        .unwrap_or_default();
+    Ok(Some(listed))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

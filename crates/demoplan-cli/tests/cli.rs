@@ -1963,3 +1963,45 @@ fn import_peak_heap_does_not_grow_with_the_log() {
         "peak heap grew with the log: {peaks:?}"
     );
 }
+
+/// `learn` takes a folder (its recordings and Unity logs, not the simulator's truth
+/// files) or a simulation manifest: the same library as naming the recordings.
+#[test]
+fn learn_takes_a_folder_or_simulation_json_like_the_files_in_it() {
+    let tmp = tempdir("learn-folder");
+    let sim = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "simulate",
+            "-o",
+            "sim",
+            "--participants",
+            "1",
+            "--per-participant",
+            "2",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(sim.status.code(), Some(0), "{}", transcript(&sim));
+    let learn = |inputs: &[&str], out: &str| {
+        let o = demoplan()
+            .current_dir(&tmp)
+            .arg("learn")
+            .args(inputs)
+            .args(["-o", out])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{inputs:?}: {}", transcript(&o));
+        std::fs::read_to_string(tmp.join(out)).unwrap()
+    };
+    let named = learn(&["sim/p01-d01.jsonl", "sim/p01-d02.jsonl"], "named.json");
+    assert_eq!(learn(&["sim"], "folder.json"), named);
+    assert_eq!(learn(&["sim/simulation.json"], "manifest.json"), named);
+    std::fs::create_dir_all(tmp.join("empty")).unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["learn", "empty", "-o", "none.json"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+}

@@ -128,8 +128,15 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
     let segment =
         |path: &Path| demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {});
-    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(args.files.len());
-    for path in &args.files {
+    let files = crate::recording_input::expand_recordings(&args.files)?;
+    if files.is_empty() {
+        return Err(Failure::plain(
+            ExitCode::USAGE,
+            "no recordings: the folders given hold no *.jsonl recording or Unity log",
+        ));
+    }
+    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(files.len());
+    for path in &files {
         let hash = file_hash(path)?;
         let known = before.as_ref().is_some_and(|l| l.has_recording(&hash))
             || inputs.iter().any(|i| i.hash == hash);

@@ -1101,7 +1101,7 @@ fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
 /// Malformed configuration, tree and ARFF files: exit 31 with file, line and field.
 #[test]
 fn malformed_demonstration_inputs_name_file_line_and_field() {
-    let cases: [(&str, &[&str]); 8] = [
+    let cases: [(&str, &[&str]); 9] = [
         (
             "unknown-field.toml",
             &[
@@ -1147,6 +1147,15 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
                 "classify",
                 "--mapping",
                 "unknown-activity.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unquoted-activity.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unquoted-activity.toml",
                 "hand-state.arff",
             ],
         ),

@@ -41,7 +41,8 @@ fn names(table: &ArffTable) -> Vec<&str> {
 }
 
 /// Tabs between values, a comma and a tab together, leading blanks, comments on their
-/// own lines and after values, blank lines, `@Relation`/`@ATTRIBUTE`/`@DATA`. Weka:
+/// own lines and after values, blank lines, `@Relation`/`@ATTRIBUTE`/`@DATA`. Weka
+/// (which prints the number `0.0` as `0`; the reader keeps numbers as written):
 /// ```text
 /// NotMove,None,None,Open,0,IdleMotion
 /// Move,cube,None,Open,0.5,Reach

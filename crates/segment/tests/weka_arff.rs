@@ -411,3 +411,83 @@ fn label_map_overrides_are_checked() {
     let map = LabelMap::with_overrides([("IdleMotion", "Reach")]).unwrap();
     assert_eq!(map.activity("IdleMotion_4"), Some(Activity::Reach));
 }
+
+/// Texts made of ARFF's pieces, well and badly put together.
+fn arff_pieces() -> impl proptest::strategy::Strategy<Value = String> {
+    use proptest::prelude::*;
+    let pieces = [
+        "@relation r\n",
+        "@RELATION 'a b'\n",
+        "@attribute Hand {NotMove, Move}\n",
+        "@attribute ObjectActedOn {None, 'red cube'}\n",
+        "@attribute ObjectInHand {None,'red cube'}\n",
+        "@attribute n numeric\n",
+        "@attribute s string\n",
+        "@attribute d date\n",
+        "@data\n",
+        "{",
+        "}",
+        "0 ",
+        "1 Move",
+        "2 ",
+        "'",
+        "\"",
+        "\\",
+        "\\1",
+        "%",
+        ",",
+        "\t",
+        " ",
+        "?",
+        "Move",
+        "None",
+        "3.5",
+        "\n",
+        "é",
+        "\u{feff}",
+        "\r\n",
+    ];
+    // Half of them after a good header, so that rows are read too.
+    let header = "@relation r\n@attribute Hand {NotMove, Move}\n@attribute ObjectActedOn {None, 'red cube'}\n@attribute ObjectInHand {None, 'red cube'}\n@attribute n numeric\n@data\n";
+    (
+        any::<bool>(),
+        proptest::collection::vec(proptest::sample::select(pieces.to_vec()), 0..40),
+    )
+        .prop_map(move |(h, p)| {
+            let body = p.concat();
+            if h {
+                format!("{header}{body}")
+            } else {
+                body
+            }
+        })
+}
+
+proptest::proptest! {
+    /// Whatever the text, the reader answers: a table whose rows each have one value per
+    /// attribute (and which reads as hand frames or says why), or an error whose line
+    /// exists and whose column is on a character of it (the CLI underlines it there).
+    #[test]
+    fn any_text_reads_or_is_refused_at_a_real_place(text in arff_pieces()) {
+        match read_arff(&text) {
+            Ok(table) => {
+                for row in &table.rows {
+                    proptest::prop_assert_eq!(row.values.len(), table.attributes.len());
+                }
+                if let Ok(frames) = table.hand_frames(30.0) {
+                    let _ = frames.segments(&ActivityTree::table_one(), 0.1);
+                    let _ = frames.dataset(&LabelMap::default());
+                }
+            }
+            Err(e) => {
+                let lines: Vec<&str> = text.lines().collect();
+                proptest::prop_assert!(e.line >= 1 && e.line <= lines.len().max(1), "{e}");
+                if e.column > 0 {
+                    let line = lines[e.line - 1];
+                    proptest::prop_assert!(e.column <= line.len() + 1, "{e}");
+                    proptest::prop_assert!(line.is_char_boundary(e.column - 1), "{e}");
+                }
+            }
+        }
+    }
+}

@@ -142,7 +142,7 @@ pub enum Command {
     ///
     /// Prints per segment its hand, start, end, activity, the object in hand and the object
     /// acted on; `--json` adds the facts at the last frame before each segment and at its
-    /// last frame. ARFF hand-state tables (FILE.arff) are segmented too, without facts.
+    /// last frame. ARFF hand-state tables (FILE.arff, or ARFF by content) are segmented too, their states the hand's own facts.
     Segment {
         /// Recordings (JSON Lines) or ARFF hand-state tables.
         #[arg(value_name = "FILE", required = true)]

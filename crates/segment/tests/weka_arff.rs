@@ -491,3 +491,14 @@ proptest::proptest! {
         }
     }
 }
+
+/// Runs of separators count as one (`1,,x` is two values), words after a numeric type
+/// are ignored, and a trailing comment ends a row. Weka 3.6.14 reads these rows as
+/// `1,x`, `2,y`, `0,y`.
+#[test]
+fn separators_collapse_and_type_trailers_are_ignored() {
+    let text = "@relation r\n@attribute a numeric ignored words\n@attribute b {x,y}\n@data\n1,,x\n2 y % c\n{1 y}\n";
+    let table = read_arff(text).unwrap();
+    assert_eq!(table.attributes[0].kind, ArffKind::Numeric);
+    assert_eq!(values(&table), [["1", "x"], ["2", "y"], ["0", "y"]]);
+}

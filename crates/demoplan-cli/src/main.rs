@@ -150,6 +150,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             tree,
             class,
             config,
+            mapping,
         } => commands::classify::run(commands::classify::ClassifyArgs {
             files,
             tree,
@@ -157,6 +158,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             out,
             class,
             config,
+            mapping,
         }),
         cli::Command::Timeline {
             file,

@@ -1101,7 +1101,7 @@ fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
 /// Malformed configuration, tree and ARFF files: exit 31 with file, line and field.
 #[test]
 fn malformed_demonstration_inputs_name_file_line_and_field() {
-    let cases: [(&str, &[&str]); 4] = [
+    let cases: [(&str, &[&str]); 9] = [
         (
             "unknown-field.toml",
             &[
@@ -1130,6 +1130,44 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
             ],
         ),
         ("short-row.arff", &["segment", "short-row.arff"]),
+        // ARFF by content, tab-separated, with a value that is not a number.
+        ("tab-not-a-number.txt", &["segment", "tab-not-a-number.txt"]),
+        (
+            "sparse-out-of-order.arff",
+            &[
+                "learn",
+                "sparse-out-of-order.arff",
+                "-o",
+                "never-written.json",
+            ],
+        ),
+        (
+            "unknown-activity.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unknown-activity.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unquoted-activity.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unquoted-activity.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unknown-mapping-key.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unknown-mapping-key.toml",
+                "hand-state.arff",
+            ],
+        ),
     ];
     for (file, args) in cases {
         let out = demoplan()
@@ -1147,6 +1185,192 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
         assert!(out.stdout.is_empty(), "{file}: printed output");
         insta::assert_snapshot!(format!("demonstration-{file}"), transcript(&out));
     }
+}
+
+/// The Weka-style tables of `crates/segment/tests/fixtures` (whose tests hold what Weka
+/// reads for each): `segment` reads them whatever their separators, quotes, sparse rows
+/// or extension; `classify` maps their labels, leaves out the frames of labels it does
+/// not know, says how many, and names those labels once with their counts.
+#[test]
+fn weka_tables_segment_and_classify_through_the_label_map() {
+    let tables = workspace().join("crates/segment/tests/fixtures");
+    // Without a minimum duration, so that every row of these short tables shows.
+    let out = demoplan()
+        .current_dir(&tables)
+        .arg("segment")
+        .arg("--config")
+        .arg(demonstrations().join("no-minimum-duration.toml"))
+        .args([
+            "tabs.arff",
+            "quoted.arff",
+            "sparse.arff",
+            "recogniser-labels.txt",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!("segment-weka-tables", transcript(&out));
+
+    // recogniser-labels.txt: 14 frames, 3 labelled Pour (unknown). Of the other 11, the
+    // tree gives the label's activity for all but Release_2 (a still, empty, open hand:
+    // Idle by Table 1, Put by the label map).
+    let classify = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt"])
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    let stdout = String::from_utf8_lossy(&classify.stdout);
+    assert!(
+        stdout.starts_with(
+            "recogniser-labels.txt: 11 labelled hand frames, 10 agree with the tree (90.91%); \
+             3 left out, their labels not in the label map\n"
+        ),
+        "{stdout}"
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&classify.stderr),
+        "warning: recogniser-labels.txt:17: labels the label map does not know, left out: Pour (3 frames)\n"
+    );
+    // With Pour mapped to Put every frame counts; ToolUse with the object in hand is Put
+    // by Table 1 too.
+    let mapped = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt", "--mapping"])
+        .arg(demonstrations().join("pour-is-put.toml"))
+        .output()
+        .unwrap();
+    assert_eq!(mapped.status.code(), Some(0), "{}", transcript(&mapped));
+    assert!(String::from_utf8_lossy(&mapped.stdout).starts_with(
+        "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
+    ));
+    assert!(mapped.stderr.is_empty(), "{}", transcript(&mapped));
+}
+
+/// `learn` reads ARFF hand-state tables directly: operators over the hand's own facts.
+#[test]
+fn learn_reads_hand_state_tables() {
+    let tmp = tempdir("learn-arff");
+    let library = tmp.join("library.json");
+    let out = demoplan()
+        .current_dir(demonstrations())
+        .args(["learn", "hand-state.arff", "-o"])
+        .arg(&library)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.starts_with("hand-state.arff: 5 activities, 5 new operator(s)\n"),
+        "{stdout}"
+    );
+    let cards = demoplan().arg("operators").arg(&library).output().unwrap();
+    let cards = String::from_utf8_lossy(&cards.stdout);
+    // The Take closes the hand on the object it reached: its effects are the hand's.
+    let take = cards
+        .split("\n\n")
+        .find(|c| c.starts_with("take "))
+        .unwrap_or_else(|| panic!("no take in\n{cards}"));
+    assert!(take.contains("?h - hand, ?x - thing"), "{take}");
+    assert!(
+        take.contains("inHand(?h, ?x)     false         true"),
+        "{take}"
+    );
+    assert!(
+        take.contains("actedOn(?h, ?x)    true          false"),
+        "{take}"
+    );
+}
+
+/// `learn DIR` learns every recording of a simulation folder, as listing them does;
+/// the simulator's truth files, given by a glob, are skipped and said so.
+#[test]
+fn learn_takes_a_folder_and_skips_the_simulators_truth() {
+    let tmp = tempdir("learn-folder");
+    let sim = tmp.join("sim");
+    let run = demoplan()
+        .args([
+            "simulate",
+            "--participants",
+            "1",
+            "--per-participant",
+            "3",
+            "-o",
+        ])
+        .arg(&sim)
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    let mut all: Vec<PathBuf> = std::fs::read_dir(&sim)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    all.sort();
+    let recordings: Vec<&PathBuf> = all
+        .iter()
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy();
+            name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
+        })
+        .collect();
+    assert_eq!(recordings.len(), 3);
+    let learn = |args: &[&Path], out: &Path| {
+        let o = demoplan()
+            .arg("learn")
+            .args(args)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{}", transcript(&o));
+        o
+    };
+    let listed = tmp.join("listed.json");
+    learn(
+        &recordings.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
+        &listed,
+    );
+    let folder = tmp.join("folder.json");
+    let o = learn(&[sim.as_path()], &folder);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr),
+        format!(
+            "{}: 3 recording(s); skipped 4 file(s) of the simulator (*.truth.jsonl, simulation.json)\n",
+            sim.display()
+        )
+    );
+    assert_eq!(
+        std::fs::read(&folder).unwrap(),
+        std::fs::read(&listed).unwrap()
+    );
+    // `sim/*` as a shell expands it: truth files and simulation.json among them.
+    let globbed = tmp.join("globbed.json");
+    let o = learn(
+        &all.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
+        &globbed,
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.starts_with("skipped 4 file(s) of the simulator, not recordings: "),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read(&globbed).unwrap(),
+        std::fs::read(&listed).unwrap()
+    );
+    // A folder with no recording is a command line error.
+    let empty = tmp.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    std::fs::write(empty.join("notes.md"), "nothing here\n").unwrap();
+    let o = demoplan()
+        .arg("learn")
+        .arg(&empty)
+        .arg("-o")
+        .arg(tmp.join("never.json"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(36), "{}", transcript(&o));
+    assert!(!tmp.join("never.json").exists());
 }
 
 #[test]
@@ -1690,4 +1914,299 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
         );
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
+}
+
+fn unity_fixtures() -> PathBuf {
+    fixtures().join("unity")
+}
+
+/// `import` on a Unity log (generated by tools/make-unity-fixtures from a simulated
+/// demonstration): the report names what was mapped, ignored and found, the mapping
+/// used is printed, and the recording written reads back.
+#[test]
+fn import_reports_each_unity_log_and_prints_the_mapping_used() {
+    let tmp = tempdir("import-unity");
+    std::fs::copy(
+        unity_fixtures().join("p01-d03.json"),
+        tmp.join("p01-d03.json"),
+    )
+    .unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(["import", "p01-d03.json", "-o", "out"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+    let inspect = demoplan()
+        .current_dir(&tmp)
+        .args(["inspect", "out/p01-d03.jsonl"])
+        .output()
+        .unwrap();
+    assert_eq!(inspect.status.code(), Some(0), "{}", transcript(&inspect));
+    // The printed mapping is a mapping file that reads back.
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let toml = &stdout[stdout.find("# demoplan import mapping").unwrap()..];
+    std::fs::write(tmp.join("used.toml"), toml).unwrap();
+    let again = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "import",
+            "p01-d03.json",
+            "--mapping",
+            "used.toml",
+            "-o",
+            "again",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(again.status.code(), Some(0), "{}", transcript(&again));
+    assert_eq!(
+        std::fs::read(tmp.join("out/p01-d03.jsonl")).unwrap(),
+        std::fs::read(tmp.join("again/p01-d03.jsonl")).unwrap()
+    );
+}
+
+/// The Unity logs go straight into `learn`: the library has Reach, Take, Put and Stack
+/// operators, `solve` builds a three-cube tower with them, and the plan executes.
+#[test]
+fn learn_solve_and_execute_on_unity_logs() {
+    let tmp = tempdir("unity-learn");
+    let mut logs: Vec<PathBuf> = std::fs::read_dir(unity_fixtures())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    logs.sort();
+    assert_eq!(logs.len(), 4);
+    let learn = demoplan()
+        .current_dir(&tmp)
+        .arg("learn")
+        .args(&logs)
+        .args(["-o", "lib.json"])
+        .output()
+        .unwrap();
+    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let text = String::from_utf8_lossy(&learn.stdout).into_owned();
+    for kind in ["Reach", "Take", "Put", "Stack"] {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(kind))
+            .unwrap_or_else(|| panic!("no {kind} line in\n{text}"));
+        let operators: u32 = line.split_whitespace().nth(2).unwrap().parse().unwrap();
+        assert!(operators > 0, "{line}");
+    }
+    let run = |args: &[&str]| {
+        let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {}", transcript(&out));
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    run(&[
+        "problem",
+        "--tower",
+        "cube_1,cube_2,cube_3",
+        "--hands",
+        "1",
+        "-o",
+        "tower.pddl",
+    ]);
+    let solved = run(&["solve", "lib.json", "tower.pddl", "--plan-file", "plan"]);
+    let prio = solved
+        .split("Solution found at priority ")
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .unwrap_or_else(|| panic!("no solution in\n{solved}"));
+    run(&["domain", "lib.json", "--prio", prio, "-o", "domain.pddl"]);
+    let executed = run(&["execute", "domain.pddl", "tower.pddl", "plan"]);
+    assert!(executed.contains("goal reached"), "{executed}");
+    let plan = std::fs::read_to_string(tmp.join("plan")).unwrap();
+    assert!(plan.contains("(stack"), "{plan}");
+}
+
+#[test]
+fn inspect_segment_and_timeline_read_unity_logs_directly() {
+    let tmp = tempdir("unity-direct");
+    let log = unity_fixtures().join("p01-d03.json");
+    for args in [
+        vec!["inspect".into(), log.display().to_string()],
+        vec!["segment".into(), log.display().to_string()],
+        vec![
+            "timeline".into(),
+            log.display().to_string(),
+            "-o".into(),
+            "t.svg".into(),
+        ],
+    ] {
+        let out = demoplan().current_dir(&tmp).args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {}", transcript(&out));
+    }
+    let segments = demoplan()
+        .args(["segment", log.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&segments.stdout);
+    assert!(text.contains("Stack") && text.contains("Reach"), "{text}");
+    // A mapping that ignores the cubes leaves nothing to stack.
+    std::fs::write(
+        tmp.join("no-cubes.toml"),
+        "default_entities = true\n[[entity]]\nglob = \"*cube*\"\nrole = \"ignore\"\n",
+    )
+    .unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "segment",
+            log.to_str().unwrap(),
+            "--mapping",
+            "no-cubes.toml",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(!text.contains("Stack"), "{}", transcript(&out));
+}
+
+#[test]
+fn import_name_clash_exits_36_before_writing_anything() {
+    let tmp = tempdir("import-clash");
+    for dir in ["a", "b"] {
+        std::fs::create_dir_all(tmp.join(dir)).unwrap();
+        std::fs::copy(
+            unity_fixtures().join("p01-d03.json"),
+            tmp.join(dir).join("log.json"),
+        )
+        .unwrap();
+    }
+    std::fs::copy(
+        unity_fixtures().join("p01-d02.json"),
+        tmp.join("first.json"),
+    )
+    .unwrap();
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args([
+            "import",
+            "first.json",
+            "a/log.json",
+            "b/log.json",
+            "-o",
+            "out",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    insta::assert_snapshot!(transcript(&out));
+    assert!(!tmp.join("out").exists(), "something was written");
+}
+
+/// One mistake per file in `fixtures/import-malformed`: Unity logs (`*.json`) and mapping
+/// files (`*.toml`, applied to a good log). Each is exit 31 with the file, the place and
+/// what is wrong, and no recording is written.
+#[test]
+fn malformed_unity_logs_and_mappings_name_file_place_and_field() {
+    let dir = fixtures().join("import-malformed");
+    let mut cases: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    cases.sort();
+    assert!(cases.len() >= 18, "only {} cases", cases.len());
+    let good = unity_fixtures().join("p01-d03.json");
+    for case in &cases {
+        let out_dir = tempdir(&format!("import-malformed-{case}"));
+        let mut cmd = demoplan();
+        cmd.current_dir(&dir).arg("import");
+        if case.ends_with(".toml") {
+            cmd.arg(&good).args(["--mapping", case]);
+        } else {
+            cmd.arg(case);
+        }
+        let out = cmd.arg("-o").arg(&out_dir).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(31), "{case}: {stderr}");
+        assert!(
+            stderr.contains(case.as_str()),
+            "{case}: no file name in\n{stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{case}: printed a report");
+        assert_eq!(
+            std::fs::read_dir(&out_dir).unwrap().count(),
+            0,
+            "{case}: wrote"
+        );
+        insta::assert_snapshot!(format!("import-{case}"), transcript(&out));
+    }
+}
+
+/// A Unity log of `steps` steps (a hand and two cubes moving), as text.
+fn long_unity_log(steps: u32) -> String {
+    let mut text = String::from("{\"playbackTimestepMilliseconds\": 20, \"log\": [\n");
+    for k in 0..steps {
+        let t = f64::from(k) * 0.05;
+        let x = (t * 0.7).sin() * 0.3;
+        if k > 0 {
+            text.push_str(",\n");
+        }
+        text.push_str(&format!(
+            "{{\"time\": {ms}, \"logStep\": [\
+             {{\"name\":\"VR_Controller_R\",\"position\":[{x:.4},1.0,0.3],\"orientation\":[1,0,0,0],\"velocity\":[0,0,0],\"events\":[]}},\
+             {{\"name\":\"Cube_1\",\"position\":[0.0,0.775,0.4],\"orientation\":[1,0,0,0],\"velocity\":[0,0,0],\"events\":[]}},\
+             {{\"name\":\"Cube_2\",\"position\":[0.1,0.775,0.4],\"orientation\":[1,0,0,0],\"velocity\":[0,0,0],\"events\":[]}}]}}",
+            ms = k * 50
+        ));
+    }
+    text.push_str("\n]}\n");
+    text
+}
+
+/// Sources stream: the peak heap of an import (counted by the binary's allocator) is the
+/// same for a log ten times longer.
+#[test]
+fn import_peak_heap_does_not_grow_with_the_log() {
+    let tmp = tempdir("import-heap");
+    let mut peaks = Vec::new();
+    for steps in [2_000, 20_000] {
+        let name = format!("log-{steps}.json");
+        std::fs::write(tmp.join(&name), long_unity_log(steps)).unwrap();
+        let out = demoplan()
+            .current_dir(&tmp)
+            .args(["import", &name, "-o", "out", "--peak-heap"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let peak: u64 = stderr
+            .split("peak heap: ")
+            .nth(1)
+            .and_then(|s| s.split_whitespace().next())
+            .and_then(|s| s.parse().ok())
+            .unwrap_or_else(|| panic!("no peak heap in {stderr}"));
+        peaks.push(peak);
+    }
+    assert!(
+        peaks[1] as f64 <= peaks[0] as f64 * 1.1,
+        "peak heap grew with the log: {peaks:?}"
+    );
+}
+
+/// A folder of Unity logs is read as the logs in it.
+#[test]
+fn learn_takes_a_folder_of_unity_logs_like_the_logs_in_it() {
+    let tmp = tempdir("learn-unity-folder");
+    std::fs::create_dir_all(tmp.join("logs")).unwrap();
+    for name in ["p01-d02.json", "p01-d03.json"] {
+        std::fs::copy(unity_fixtures().join(name), tmp.join("logs").join(name)).unwrap();
+    }
+    let learn = |inputs: &[&str], out: &str| {
+        let o = demoplan()
+            .current_dir(&tmp)
+            .arg("learn")
+            .args(inputs)
+            .args(["-o", out])
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{inputs:?}: {}", transcript(&o));
+        std::fs::read_to_string(tmp.join(out)).unwrap()
+    };
+    let named = learn(&["logs/p01-d02.json", "logs/p01-d03.json"], "named.json");
+    assert_eq!(learn(&["logs"], "folder.json"), named);
 }

@@ -141,11 +141,31 @@ pub struct Report {
     pub table: String,
     /// Grasps found (a hand starting to hold an object).
     pub grasps: u64,
-    /// Gaps, in order of their start.
+    /// How many gaps there were.
+    pub gap_count: u64,
+    /// The longest gaps (at most [`Report::LONGEST_GAPS`]), longest first; kept bounded
+    /// so that memory does not grow with the source.
     pub gaps: Vec<Gap>,
 }
 
 impl Report {
+    /// How many of the longest gaps a report keeps.
+    pub const LONGEST_GAPS: usize = 10;
+
+    fn add_gap(&mut self, gap: Gap) {
+        self.gap_count += 1;
+        let length = gap.to - gap.from;
+        let at = self
+            .gaps
+            .iter()
+            .position(|g| g.to - g.from < length)
+            .unwrap_or(self.gaps.len());
+        if at < Report::LONGEST_GAPS {
+            self.gaps.insert(at, gap);
+            self.gaps.truncate(Report::LONGEST_GAPS);
+        }
+    }
+
     /// The report as text, one fact a line, with the native names of `header`.
     pub fn render(&self, header: &Header) -> String {
         let mut out = String::new();
@@ -187,8 +207,16 @@ impl Report {
             line(format!("  {} ({})", i.source, i.reason));
         }
         line(format!("grasps found: {}", self.grasps));
-        line(format!("gaps: {}", self.gaps.len()));
-        for g in self.gaps.iter().take(10) {
+        line(format!(
+            "gaps: {}{}",
+            self.gap_count,
+            if self.gap_count > self.gaps.len() as u64 {
+                format!(" (the {} longest:)", self.gaps.len())
+            } else {
+                String::new()
+            }
+        ));
+        for g in &self.gaps {
             line(format!(
                 "  {} missing from {:.3} s to {:.3} s ({:.3} s)",
                 header.entity(g.entity).name,
@@ -196,9 +224,6 @@ impl Report {
                 g.to,
                 g.to - g.from
             ));
-        }
-        if self.gaps.len() > 10 {
-            line(format!("  ... and {} more", self.gaps.len() - 10));
         }
         out
     }
@@ -577,6 +602,7 @@ impl Importer {
                 ignored,
                 table: table_note,
                 grasps: 0,
+                gap_count: 0,
                 gaps: Vec::new(),
             },
         })
@@ -952,7 +978,7 @@ impl AssemblySink<'_> {
             if self.frame.states[i].is_some() {
                 if self.missing[i] {
                     if let Some(from) = self.last_present[i] {
-                        self.report.gaps.push(Gap {
+                        self.report.add_gap(Gap {
                             entity: EntityId(i as u32),
                             from,
                             to: time,

@@ -4,7 +4,8 @@
 
 use crate::draw::{pt, text_width, Anchor, Color, Figure, Point, Stroke, Text};
 use crate::model::{
-    domain_label, format_limit, planner_label, Experiment, Goal, Level, Outcome, Run, TYPE_NAMES,
+    domain_label, format_limit, planner_label, Experiment, Goal, Level, Measure, Outcome, Run,
+    TYPE_NAMES,
 };
 
 /// Line colours for domains, by priority order (Okabe-Ito, readable when printed grey).
@@ -167,17 +168,30 @@ fn cross_marker(fig: &mut Figure, at: Point, color: Color) {
 /// the limit with a "> limit" note, joined by dashed lines (the true time is higher);
 /// unsolvable runs are crosses; with repeats, a bar shows each run's min-max spread.
 pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
+    time_figure(exp, planner, Measure::Search)
+}
+
+/// [`search_time_figure`] by any [`Measure`]: the same figure of total times, titled
+/// so (repeats' spreads are drawn for search time only, the one measure kept per
+/// repeat).
+pub fn time_figure(exp: &Experiment, planner: &str, measure: Measure) -> Figure {
     let (w, h) = (900u32, 580u32);
     let mut fig = Figure::new(
         w,
         h,
-        &format!("Search time per goal, {}", planner_label(planner)),
+        &format!("{} per goal, {}", measure.title(), planner_label(planner)),
     );
     let (left, right, top, bottom) = (116.0, 670.0, 60.0, 470.0);
     title(
         &mut fig,
-        &format!("Search time per goal: {}", planner_label(planner)),
+        &format!("{} per goal: {}", measure.title(), planner_label(planner)),
     );
+    let spread = |r: &Run| -> Vec<f64> {
+        match measure {
+            Measure::Search => r.times.clone(),
+            Measure::Total => Vec::new(),
+        }
+    };
 
     let runs: Vec<&Run> = exp.runs.iter().filter(|r| r.planner == planner).collect();
     let goals = exp.goal_numbers();
@@ -190,12 +204,12 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
     // Axes.
     let min_time = runs
         .iter()
-        .flat_map(|r| r.times.iter().copied().chain([r.search_time]))
+        .flat_map(|r| spread(r).into_iter().chain([r.time(measure)]))
         .filter(|t| *t > 0.0 && t.is_finite())
         .fold(f64::INFINITY, f64::min);
     let max_time = runs
         .iter()
-        .flat_map(|r| r.times.iter().copied().chain([r.search_time]))
+        .flat_map(|r| spread(r).into_iter().chain([r.time(measure)]))
         .filter(|t| t.is_finite())
         .fold(exp.time_limit, f64::max);
     let y = LogScale::covering(min_time, max_time, -3, bottom, top);
@@ -269,7 +283,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
         &mut fig,
         26.0,
         (top + bottom) / 2.0,
-        "search time (s), log scale",
+        &format!("{} (s), log scale", measure.title().to_lowercase()),
     );
 
     // The time limit.
@@ -310,7 +324,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
     for (i, &(prio, _)) in domains.iter().enumerate() {
         let color = DOMAIN_COLORS[i % DOMAIN_COLORS.len()];
         let dx = (i as f64 - (n - 1.0) / 2.0) * 7.0;
-        let point = |r: &Run| pt(gx(r.goal) + dx, y.map(r.search_time));
+        let point = |r: &Run| pt(gx(r.goal) + dx, y.map(r.time(measure)));
         let series: Vec<Option<&Run>> = goals
             .iter()
             .map(|&g| runs.iter().copied().find(|r| r.prio == prio && r.goal == g))
@@ -342,7 +356,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
             match r.outcome {
                 Outcome::Solved => {
                     let finite: Vec<f64> =
-                        r.times.iter().copied().filter(|t| t.is_finite()).collect();
+                        spread(r).into_iter().filter(|t| t.is_finite()).collect();
                     if finite.len() > 1 {
                         let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
                         let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);

@@ -45,7 +45,7 @@ pub use model::{
     Ratio, Run, PLANNER_ORDER, TYPE_NAMES,
 };
 pub use plots::{
-    decade_label, goal_figure, goals_figure, operators_figure, search_time_figure, time_figure,
-    LogScale,
+    decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,
+    time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,
 };
 pub use raster::Canvas;

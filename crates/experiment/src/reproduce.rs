@@ -15,7 +15,7 @@ use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
 use crate::lab::{tower_problem, towers, Lab};
 use crate::output::{create_dir, csv_field, machine, opt, write_file, write_text};
-use crate::ratio::{ratio, ratio_text};
+use crate::ratio::ratio;
 use crate::record::RunRecord;
 use crate::{run_cells, ExperimentError, Progress};
 
@@ -524,12 +524,7 @@ fn tables_markdown(
             let alg1 = pick(&|r| r.level_choice() == Some(LevelChoice::Algorithm1));
             let cell = |den: Option<&RunRecord>, m: Measure| match (full, den) {
                 (Some(f), Some(d)) if f.prio != d.prio || d.level == "alg1" => {
-                    let t = ratio_text(ratio(f, d, m));
-                    if t.is_empty() {
-                        "-".to_string()
-                    } else {
-                        t
-                    }
+                    ratio(f, d, m).map_or("-".to_string(), |r| r.to_string())
                 }
                 _ => "-".to_string(),
             };

@@ -206,9 +206,9 @@ pub fn study(
     let records = run_cells(&mut lab, &cells, &done, Some(&results), progress, &describe)?;
 
     write_text(&out.join("study.json"), &study_json(options, cells.len()))?;
-    let mut runs = format!("{RUNS_HEADER},plan_prio,levels_tried\n");
+    let mut runs = format!("{RUNS_HEADER},levels_tried\n");
     for r in &records {
-        let _ = writeln!(runs, "{},{},{}", runs_csv_row(r), r.prio, r.widening.len());
+        let _ = writeln!(runs, "{},{}", runs_csv_row(r), r.widening.len());
     }
     write_text(&out.join("runs.csv"), &runs)?;
     let table = ratio_table(&records);

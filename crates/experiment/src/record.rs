@@ -186,6 +186,28 @@ pub fn read_records(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
     }
 }
 
+/// Reads a results file to resume from it: like [`read_records`], and a last line cut
+/// short is removed from the file (atomically), so that the next append starts on a
+/// line of its own.
+pub fn read_records_for_append(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => {
+            return Err(ExperimentError::Io {
+                path: path.to_path_buf(),
+                message: e.to_string(),
+            })
+        }
+    };
+    let records = parse_records(&text, path)?;
+    if !text.is_empty() && !text.ends_with('\n') {
+        let complete = text.rfind('\n').map_or("", |i| &text[..=i]);
+        crate::output::write_text(path, complete)?;
+    }
+    Ok(records)
+}
+
 /// Appends one record as one line, in one write, and flushes it to the disk: a crash
 /// loses at most the line being written, which [`parse_records`] then leaves out.
 pub fn append_record(path: &Path, record: &RunRecord) -> Result<(), ExperimentError> {

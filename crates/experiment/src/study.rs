@@ -18,7 +18,7 @@ use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
 use crate::lab::Lab;
 use crate::output::{create_dir, csv_field, machine, write_file, write_text};
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
-use crate::record::{read_records, RunRecord};
+use crate::record::{read_records_for_append, RunRecord};
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
 use crate::{run_cells, ExperimentError, Progress};
 
@@ -182,7 +182,7 @@ pub fn study(
     let out = &options.out;
     create_dir(out)?;
     let results = out.join("results.jsonl");
-    let done = read_records(&results)?;
+    let done = read_records_for_append(&results)?;
     let cells = study_grid(options);
     let known: std::collections::HashSet<&str> = done.iter().map(|r| r.id.as_str()).collect();
     let computed = cells

@@ -2,6 +2,8 @@
 //! reduced `reproduce` grid: priorities 1 and 3, goals 1 to 3, 5 s limit) gives the
 //! same text on every machine.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
+
 use std::path::Path;
 
 use experiment::{findings, parse_records, ratio, RunRecord};

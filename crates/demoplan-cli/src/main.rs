@@ -133,6 +133,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             tree,
             class,
             config,
+            mapping,
         } => commands::classify::run(commands::classify::ClassifyArgs {
             files,
             tree,
@@ -140,6 +141,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             out,
             class,
             config,
+            mapping,
         }),
         cli::Command::Timeline {
             file,

@@ -27,6 +27,15 @@ fn seconds(r: &RunRecord, measure: Measure) -> String {
     }
 }
 
+/// "0.5 s of search", or why there is no search time.
+fn search_words(r: &RunRecord) -> String {
+    if r.time(Measure::Search).is_none() && r.hit_limit() {
+        "no search time (the limit came before the search expanded a state)".to_string()
+    } else {
+        format!("{} of search", seconds(r, Measure::Search))
+    }
+}
+
 /// Findings for the tallest goal of `records`, per planner: the full domain against
 /// priority 1 (`ratio_p1`) and against Algorithm 1's cumulative time (`ratio_alg1`),
 /// both by search and by total time, beside the paper's; what the full domain's time
@@ -71,10 +80,10 @@ pub fn findings(records: &[RunRecord]) -> Vec<String> {
         let Some(full) = full else { continue };
         let mut text = format!(
             "{label}, towers of {height} cubes: the largest domain (priority {}, {} \
-             operators) takes {} of search and {} in total",
+             operators) takes {} and {} in total",
             full.prio,
             full.operators,
-            seconds(full, Measure::Search),
+            search_words(full),
             seconds(full, Measure::Total)
         );
         match p1 {

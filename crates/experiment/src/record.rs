@@ -113,11 +113,17 @@ impl RunRecord {
 
     /// The time by `measure` and whether it is exact or a lower bound (the run hit its
     /// limit); `None` for a run that gave no time worth comparing (no plan exists in
-    /// its domain, or an error).
+    /// its domain, or an error), and for the search time of a run that hit its limit
+    /// before its search expanded a state (iPDB's hill climbing took the whole limit):
+    /// its search never began, so nothing is known of it, not even a bound.
     pub fn time(&self, measure: Measure) -> Option<(f64, Bound)> {
         if self.solved() {
             Some((self.times.get(measure), Bound::Exact))
         } else if self.hit_limit() {
+            let searched = self.expansions != Some(0);
+            if measure == Measure::Search && !searched {
+                return None;
+            }
             Some((self.times.get(measure), Bound::AtLeast))
         } else {
             None
@@ -290,6 +296,10 @@ mod tests {
         assert_eq!(r.time(Measure::Total), Some((0.015, Bound::Exact)));
         r.outcome = "limit".into();
         assert_eq!(r.time(Measure::Search), Some((0.003, Bound::AtLeast)));
+        // Stopped in the hill climbing: the search never began.
+        r.expansions = Some(0);
+        assert_eq!(r.time(Measure::Search), None);
+        assert_eq!(r.time(Measure::Total), Some((0.015, Bound::AtLeast)));
         r.outcome = "unsolvable".into();
         assert_eq!(r.time(Measure::Search), None);
     }

@@ -373,7 +373,13 @@ pub fn ratio(slow: &Run, fast: &Run) -> Option<Ratio> {
 
 /// [`ratio`] by any [`Measure`].
 pub fn ratio_by(slow: &Run, fast: &Run, measure: Measure) -> Option<Ratio> {
-    let usable = |r: &Run| matches!(r.outcome, Outcome::Solved | Outcome::Limit);
+    // A run stopped before its search expanded a state (the hill climbing took the whole
+    // limit) has no search time at all, not even a bound.
+    let usable = |r: &Run| match r.outcome {
+        Outcome::Solved => true,
+        Outcome::Limit => measure == Measure::Total || r.expansions != Some(0),
+        _ => false,
+    };
     let (s, f) = (slow.time(measure), fast.time(measure));
     if !usable(slow) || !usable(fast) || f.is_nan() || f <= 0.0 || !s.is_finite() {
         return None;
@@ -463,6 +469,17 @@ mod tests {
         );
         assert_eq!(r.map(|r| r.to_string()), Some(">= 30x".to_string()));
         assert_eq!(ratio(&slow, &run(1, Outcome::Limit, 60.0)), None);
+        // Stopped before the search expanded a state: no search time, so no ratio by
+        // it; by total time still a bound.
+        let climbed = Run {
+            expansions: Some(0),
+            ..slow.clone()
+        };
+        assert_eq!(ratio(&climbed, &fast), None);
+        assert_eq!(
+            ratio_by(&climbed, &fast, Measure::Total).map(|r| r.bound),
+            Some(Bound::AtLeast)
+        );
         assert_eq!(ratio(&slow, &run(1, Outcome::Unsolvable, 1.0)), None);
         let exp = Experiment {
             runs: vec![slow, fast],

@@ -10,12 +10,12 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 static IN_USE: AtomicU64 = AtomicU64::new(0);
-/// The most bytes in use since the last [`reset_peak`]: one relaxed `fetch_max` per
-/// allocation, so that `reproduce` and `study` report each run's peak heap.
 static PEAK: AtomicU64 = AtomicU64::new(0);
 
-fn grew(previous: u64, size: usize) {
-    PEAK.fetch_max(previous + size as u64, Ordering::Relaxed);
+/// Counts `size` more bytes in use and raises the peak.
+fn grow(size: usize) {
+    let now = IN_USE.fetch_add(size as u64, Ordering::Relaxed) + size as u64;
+    PEAK.fetch_max(now, Ordering::Relaxed);
 }
 
 /// The system allocator, counting bytes in use.
@@ -29,10 +29,7 @@ unsafe impl GlobalAlloc for CountingAllocator {
         // SAFETY: forwarded unchanged.
         let p = unsafe { System.alloc(layout) };
         if !p.is_null() {
-            grew(
-                IN_USE.fetch_add(layout.size() as u64, Ordering::Relaxed),
-                layout.size(),
-            );
+            grow(layout.size());
         }
         p
     }
@@ -41,10 +38,7 @@ unsafe impl GlobalAlloc for CountingAllocator {
         // SAFETY: forwarded unchanged.
         let p = unsafe { System.alloc_zeroed(layout) };
         if !p.is_null() {
-            grew(
-                IN_USE.fetch_add(layout.size() as u64, Ordering::Relaxed),
-                layout.size(),
-            );
+            grow(layout.size());
         }
         p
     }
@@ -60,28 +54,22 @@ unsafe impl GlobalAlloc for CountingAllocator {
         let p = unsafe { System.realloc(ptr, layout, new_size) };
         if !p.is_null() {
             IN_USE.fetch_sub(layout.size() as u64, Ordering::Relaxed);
-            grew(
-                IN_USE.fetch_add(new_size as u64, Ordering::Relaxed),
-                new_size,
-            );
+            grow(new_size);
         }
         p
     }
 }
 
-/// Bytes currently allocated on the heap.
-pub fn heap_in_use() -> u64 {
-    IN_USE.load(Ordering::Relaxed)
-}
-
-/// Starts a new peak heap at what is in use now.
-pub fn reset_peak() {
-    PEAK.store(heap_in_use(), Ordering::Relaxed);
-}
-
-/// The peak heap in bytes since the last [`reset_peak`].
+/// The most bytes allocated on the heap at any time since the start, or since the last
+/// [`reset_peak`].
 pub fn peak_heap() -> u64 {
     PEAK.load(Ordering::Relaxed)
+}
+
+/// Starts a new peak heap at what is in use now (each run of `reproduce` and `study`
+/// reports its own peak).
+pub fn reset_peak() {
+    PEAK.store(heap_in_use(), Ordering::Relaxed);
 }
 
 /// The probe that lets the experiment measure each run's peak heap.
@@ -90,6 +78,11 @@ pub fn probe() -> slim::MemoryProbe {
         reset: reset_peak,
         peak: peak_heap,
     }
+}
+
+/// Bytes currently allocated on the heap.
+pub fn heap_in_use() -> u64 {
+    IN_USE.load(Ordering::Relaxed)
 }
 
 /// The process's peak resident set size in KiB (`VmHWM`), where the system reports it.

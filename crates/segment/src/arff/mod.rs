@@ -324,8 +324,7 @@ impl HandColumns {
             held: need(IN_HAND)?,
             state: find_any(attributes, HAND_STATE),
             activity: find_any(attributes, ACTIVITY),
-            time: find_any(attributes, TIME)
-                .filter(|&t| attributes[t].kind == ArffKind::Numeric),
+            time: find_any(attributes, TIME).filter(|&t| attributes[t].kind == ArffKind::Numeric),
         })
     }
 }
@@ -516,20 +515,21 @@ impl HandTable {
         FactSpace::new(&self.header)
     }
 
-    /// Segments the rows (the second pass) with `tree` and the minimum duration (s):
-    /// [`HandFrames::segments`] for a table read row by row.
-    pub fn segments<R: Borrow<ArffRow>>(
+    /// Segments the table's frames (the second pass, [`HandTable::frames`]) with `tree`
+    /// and the minimum duration (s): [`HandFrames::segments`] for a table read row by
+    /// row. The first error ends it.
+    pub fn segments(
         &self,
-        rows: impl IntoIterator<Item = Result<R, ArffError>>,
+        frames: impl IntoIterator<Item = Result<LabelledFrame, ArffError>>,
         tree: &ActivityTree,
         min_duration: f64,
     ) -> Result<TableSegments, ArffError> {
         let space = self.fact_space();
         let mut segmenter = Segmenter::new(&[HAND_ID], tree.clone(), min_duration);
-        let (mut frames, mut first, mut last) = (0, None, 0.0);
-        for frame in self.frames(rows) {
+        let (mut count, mut first, mut last) = (0, None, 0.0);
+        for frame in frames {
             let frame = frame?;
-            frames += 1;
+            count += 1;
             first.get_or_insert(frame.time);
             last = frame.time;
             segmenter.push(frame.time, &[frame.hand], &hand_state(&space, &frame));
@@ -537,7 +537,7 @@ impl HandTable {
         Ok(TableSegments {
             space,
             segments: segmenter.finish(),
-            frames,
+            frames: count,
             duration: last - first.unwrap_or(last),
         })
     }

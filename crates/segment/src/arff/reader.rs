@@ -29,7 +29,6 @@
 
 use super::{error, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable};
 
-
 /// What Weka reads for a string attribute that a sparse row leaves out: its loader puts
 /// this placeholder at index 0 of every string attribute's values (checked with Weka
 /// 3.6.14's `ArffLoader`).
@@ -313,8 +312,8 @@ impl<R: std::io::BufRead> ArffReader<R> {
         };
         while self.next_line(field(section))? {
             let line = self.line;
-            let tokens = tokenize(&self.text)
-                .map_err(|e| error(line, e.column, "@attribute", e.message))?;
+            let tokens =
+                tokenize(&self.text).map_err(|e| error(line, e.column, "@attribute", e.message))?;
             let Some(first) = tokens.first() else {
                 continue;
             };

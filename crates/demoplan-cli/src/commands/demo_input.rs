@@ -3,13 +3,17 @@
 //! grounding and segmentation over a recording.
 
 use std::fmt::Write as _;
+use std::fs::File;
+use std::io::BufReader;
 use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
 use grounding::{GroundedFrame, Grounder, GroundingConfig};
 use miette::NamedSource;
 use recording::{Frame, Header};
-use segment::{ActivityTree, DecisionTree, HandFrames, LabelMap, Segment, Segmenter};
+use segment::{
+    ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame, Segment, Segmenter,
+};
 
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
@@ -216,51 +220,99 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
     Ok(map)
 }
 
-/// An ARFF table, read and checked; its text is returned for later errors.
-pub fn arff_table(path: &Path) -> Result<(segment::ArffTable, String), Failure> {
-    let text = input::read_text(path)?;
-    let table = segment::read_arff(&text).map_err(|e| arff_failure(path, &text, &e))?;
-    Ok((table, text))
+/// An ARFF file opened for reading a row at a time: its header read and checked.
+pub fn arff_reader(path: &Path) -> Result<ArffReader<BufReader<File>>, Failure> {
+    let file = File::open(path).map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!("cannot read {}: {e}", path.display()),
+        )
+    })?;
+    ArffReader::new(BufReader::new(file)).map_err(|e| arff_failure(path, &e))
 }
 
-/// The failure for an ARFF error.
-pub fn arff_failure(path: &Path, text: &str, e: &segment::ArffError) -> Failure {
-    text_failure(
-        path,
-        text,
-        "segment::arff",
-        e.line,
-        e.column,
-        &e.field,
-        &e.message,
-    )
+/// A whole ARFF table in memory, for what needs every row at once (C4.5 on a data set
+/// that is not a hand-state table).
+pub fn arff_table(path: &Path) -> Result<segment::ArffTable, Failure> {
+    let mut reader = arff_reader(path)?;
+    let rows = reader
+        .by_ref()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| arff_failure(path, &e))?;
+    Ok(segment::ArffTable {
+        relation: reader.relation().to_string(),
+        attributes: reader.attributes().to_vec(),
+        rows,
+    })
 }
 
-/// An ARFF hand-state table as frames; its warnings are printed on standard error.
-pub fn hand_frames(path: &Path) -> Result<HandFrames, Failure> {
-    let (table, text) = arff_table(path)?;
-    let frames = table
-        .hand_frames(ARFF_FRAME_RATE)
-        .map_err(|e| arff_failure(path, &text, &e))?;
-    warn(path, &frames.warnings);
-    Ok(frames)
+/// The failure for an ARFF error, shown on its line of the file. The file is read again
+/// for that: tables are read a row at a time and no text is kept. A file that cannot be
+/// read again (or is not UTF-8 text) gets the message without its line shown.
+pub fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
+    match std::fs::read_to_string(path) {
+        Ok(text) => text_failure(
+            path,
+            &text,
+            "segment::arff",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        ),
+        Err(_) => Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!(
+                "{}:{}: field `{}`: {}",
+                path.display(),
+                e.line,
+                e.field,
+                e.message
+            ),
+        ),
+    }
+}
+
+/// An ARFF hand-state table after its first pass (objects, labels); its warnings are
+/// printed on standard error. [`arff_frames`] is the second pass.
+pub fn hand_table(path: &Path) -> Result<HandTable, Failure> {
+    let reader = arff_reader(path)?;
+    let (relation, attributes) = (reader.relation().to_string(), reader.attributes().to_vec());
+    let table = HandTable::scan(&relation, &attributes, reader, ARFF_FRAME_RATE)
+        .map_err(|e| arff_failure(path, &e))?;
+    warn(path, &table.warnings);
+    Ok(table)
+}
+
+/// The second pass over a hand-state table: `each` sees every frame, in order.
+pub fn arff_frames(
+    path: &Path,
+    table: &HandTable,
+    mut each: impl FnMut(&LabelledFrame),
+) -> Result<(), Failure> {
+    for frame in table.frames(arff_reader(path)?) {
+        each(&frame.map_err(|e| arff_failure(path, &e))?);
+    }
+    Ok(())
 }
 
 /// An ARFF hand-state table segmented: its hand's own facts are the states (it has no
-/// geometry, so no grounding).
+/// geometry, so no grounding). The file is read twice, a row at a time.
 pub fn segment_arff(
     path: &Path,
     tree: &ActivityTree,
     min_duration: f64,
 ) -> Result<Segmented, Failure> {
-    let frames = hand_frames(path)?;
-    let (space, segments) = frames.segments(tree, min_duration);
+    let table = hand_table(path)?;
+    let segmented = table
+        .segments(table.frames(arff_reader(path)?), tree, min_duration)
+        .map_err(|e| arff_failure(path, &e))?;
     Ok(Segmented {
-        space,
-        frames: frames.frames.len() as u64,
-        duration: frames.duration(),
-        header: frames.header,
-        segments,
+        space: segmented.space,
+        frames: segmented.frames,
+        duration: segmented.duration,
+        header: table.header,
+        segments: segmented.segments,
     })
 }
 

@@ -368,7 +368,17 @@ impl HandTable {
         rows: impl IntoIterator<Item = Result<R, ArffError>>,
         frame_rate: f64,
     ) -> Result<HandTable, ArffError> {
-        let columns = HandColumns::find(attributes)?;
+        let columns = match HandColumns::find(attributes) {
+            Ok(columns) => columns,
+            Err(e) => {
+                // A row that does not read says more than a missing column, and is what
+                // `read_arff` then `hand_frames` say first.
+                for row in rows {
+                    row?;
+                }
+                return Err(e);
+            }
+        };
         let mut object_columns = [columns.acted, columns.held].map(|c| ObjectColumn {
             declared: match &attributes[c].kind {
                 ArffKind::Nominal(v) => v.clone(),

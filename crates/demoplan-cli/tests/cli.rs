@@ -1915,3 +1915,53 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
 }
+
+/// A hand-state table of `rows` rows whose activity changes every ten rows (a third of a
+/// second at the tables' 30 frames a second): many segments.
+fn busy_hand_table(rows: usize) -> String {
+    let mut text = String::from(
+        "@relation busy\n@attribute Hand {NotMove, Move}\n\
+         @attribute ObjectActedOn {None, cube}\n@attribute ObjectInHand {None, cube}\n\
+         @attribute Activity {IdleMotion, Reach}\n@data\n",
+    );
+    for i in 0..rows {
+        text.push_str(if (i / 10) % 2 == 0 {
+            "NotMove,None,None,IdleMotion\n"
+        } else {
+            "Move,cube,None,Reach\n"
+        });
+    }
+    text
+}
+
+/// `segment FILE | head -1`, `classify FILE... | head -1`: the reader goes away and
+/// demoplan stops with a shell's SIGPIPE code, printing nothing (it printed `error: `).
+#[test]
+fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
+    let tmp = tempdir("closed-pipe");
+    std::fs::write(tmp.join("busy.arff"), busy_hand_table(40_000)).unwrap();
+    std::fs::write(tmp.join("small.arff"), busy_hand_table(40)).unwrap();
+    let many_tables: Vec<&str> = std::iter::repeat_n("small.arff", 1_000).collect();
+    let runs: [Vec<&str>; 3] = [
+        vec!["segment", "busy.arff"],
+        vec!["segment", "--json", "busy.arff"],
+        [&["classify"][..], &many_tables].concat(),
+    ];
+    for args in runs {
+        // Far more than a pipe holds (64 KB): the writer meets the closed pipe.
+        let full = demoplan().current_dir(&tmp).args(&args).output().unwrap();
+        assert_eq!(full.status.code(), Some(0), "{}", transcript(&full));
+        assert!(full.stdout.len() > 128 * 1024, "{}: {}", args[0], full.stdout.len());
+        let mut child = demoplan()
+            .current_dir(&tmp)
+            .args(&args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(141), "{args:?}: {}", transcript(&out));
+        assert!(out.stderr.is_empty(), "{args:?}: {}", transcript(&out));
+    }
+}

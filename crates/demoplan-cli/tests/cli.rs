@@ -1951,7 +1951,12 @@ fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
         // Far more than a pipe holds (64 KB): the writer meets the closed pipe.
         let full = demoplan().current_dir(&tmp).args(&args).output().unwrap();
         assert_eq!(full.status.code(), Some(0), "{}", transcript(&full));
-        assert!(full.stdout.len() > 128 * 1024, "{}: {}", args[0], full.stdout.len());
+        assert!(
+            full.stdout.len() > 128 * 1024,
+            "{}: {}",
+            args[0],
+            full.stdout.len()
+        );
         let mut child = demoplan()
             .current_dir(&tmp)
             .args(&args)
@@ -1961,7 +1966,12 @@ fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
             .unwrap();
         drop(child.stdout.take());
         let out = child.wait_with_output().unwrap();
-        assert_eq!(out.status.code(), Some(141), "{args:?}: {}", transcript(&out));
+        assert_eq!(
+            out.status.code(),
+            Some(141),
+            "{args:?}: {}",
+            transcript(&out)
+        );
         assert!(out.stderr.is_empty(), "{args:?}: {}", transcript(&out));
     }
 }

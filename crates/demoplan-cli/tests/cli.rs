@@ -2270,3 +2270,33 @@ fn learn_takes_a_folder_of_unity_logs_like_the_logs_in_it() {
     let named = learn(&["logs/p01-d02.json", "logs/p01-d03.json"], "named.json");
     assert_eq!(learn(&["logs"], "folder.json"), named);
 }
+
+/// One mapping file serves every command: the import crate's keys for Unity logs
+/// (`max_age`, `[[entity]]`) and the `[labels]` that `classify` maps ARFF labels with.
+#[test]
+fn one_mapping_file_serves_classify_and_the_unity_commands() {
+    let mapping = demonstrations().join("one-mapping.toml");
+    let tables = format!("{}/../segment/tests/fixtures", env!("CARGO_MANIFEST_DIR"));
+    let classify = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt", "--mapping"])
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    // Pour is Put by the file's [labels]: no frame is left out.
+    assert!(String::from_utf8_lossy(&classify.stdout).starts_with(
+        "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
+    ));
+    assert!(classify.stderr.is_empty(), "{}", transcript(&classify));
+    let log = unity_fixtures().join("p01-d03.json");
+    let segment = demoplan()
+        .arg("segment")
+        .arg(&log)
+        .arg("--mapping")
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(segment.status.code(), Some(0), "{}", transcript(&segment));
+    assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
+}

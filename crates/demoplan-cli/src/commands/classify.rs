@@ -27,7 +27,8 @@ pub struct ClassifyArgs {
     pub out: Option<PathBuf>,
     pub class: Option<String>,
     pub config: Option<PathBuf>,
-    /// A mapping file whose `[labels]` table maps ARFF labels to activities.
+    /// The mapping file (the import crate's), whose `[labels]` table maps ARFF labels
+    /// to activities.
     pub mapping: Option<PathBuf>,
 }
 

@@ -165,59 +165,48 @@ pub fn is_arff(path: &Path) -> bool {
     segment::is_arff_text(&String::from_utf8_lossy(&start))
 }
 
-/// The label map: the defaults, with the `[labels]` table of a mapping file on top
-/// (`LABEL = "Activity"`). Any other key is an input error, as is an activity that does
-/// not exist, each with the file's line and the key.
+/// The label map: the defaults, with the `[labels]` table of the mapping file on top
+/// (`LABEL = "Activity"`). The mapping file is the import crate's, the one every command
+/// takes with `--mapping` (`docs/import.md`): a malformed file or an unknown key is an
+/// input error naming its line and key, as is an activity that does not exist.
 pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
-    #[derive(serde::Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct MappingFile {
-        #[serde(default)]
-        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
-    }
     let Some(path) = path else {
         return Ok(LabelMap::default());
     };
-    let text = input::read_text(path)?;
-    let at = |offset: usize| {
-        let line = text[..offset.min(text.len())].matches('\n').count() + 1;
-        let column = offset - line_start(&text, line).unwrap_or(0) + 1;
-        (line, column)
-    };
-    let file: MappingFile = toml::from_str(&text).map_err(|e| {
-        let (line, column) = e.span().map_or((0, 0), |s| at(s.start));
-        let key = text
-            .lines()
-            .nth(line.saturating_sub(1))
-            .and_then(|l| l.split('=').next())
-            .map(|k| k.trim().trim_matches(['[', ']']).trim().to_string())
-            .unwrap_or_default();
+    let mapping = recording_input::mapping(Some(path), import::Format::Arff)?;
+    LabelMap::with_overrides(
+        mapping
+            .labels
+            .iter()
+            .map(|(label, activity)| (label.as_str(), activity.as_str())),
+    )
+    .map_err(|e| {
+        // The mapping keeps no positions: find the label's value in the file again.
+        let text = std::fs::read_to_string(path).unwrap_or_default();
+        let (line, column) = label_position(&text, &e.label).unwrap_or((0, 0));
         text_failure(
             path,
             &text,
-            "demoplan::mapping",
+            "import::mapping",
             line,
             column,
-            &key,
-            e.message().trim(),
+            &format!("labels.{}", e.label),
+            &e.to_string(),
         )
-    })?;
-    let mut map = LabelMap::default();
-    for (label, activity) in &file.labels {
-        map.set(label, activity.get_ref()).map_err(|e| {
-            let (line, column) = at(activity.span().start);
-            text_failure(
-                path,
-                &text,
-                "demoplan::mapping",
-                line,
-                column,
-                &format!("labels.{label}"),
-                &e.to_string(),
-            )
-        })?;
+    })
+}
+
+/// Where the value of `labels.LABEL` starts in a mapping file (1-based line and column).
+fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
+    #[derive(serde::Deserialize)]
+    struct Labels {
+        #[serde(default)]
+        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
     }
-    Ok(map)
+    let file: Labels = toml::from_str(text).ok()?;
+    let offset = file.labels.get(label)?.span().start;
+    let line = text[..offset.min(text.len())].matches('\n').count() + 1;
+    Some((line, offset - line_start(text, line)? + 1))
 }
 
 /// An ARFF file opened for reading a row at a time: its header read and checked.

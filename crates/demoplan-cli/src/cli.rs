@@ -214,8 +214,8 @@ pub enum Command {
         /// Grounding thresholds as TOML, for recordings.
         #[arg(long, value_name = "FILE")]
         config: Option<PathBuf>,
-        /// A TOML file whose `[labels]` table maps ARFF labels to activities
-        /// (`PourSomething = "Put"`), over the defaults (docs/grounding.md).
+        /// The mapping file (TOML, docs/import.md) whose `[labels]` table maps ARFF
+        /// labels to activities (`PourSomething = "Put"`), over the defaults.
         #[arg(long, value_name = "FILE")]
         mapping: Option<PathBuf>,
     },

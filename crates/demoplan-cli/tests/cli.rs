@@ -2096,6 +2096,66 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
     }
 }
 
+/// A hand-state table of `rows` rows whose activity changes every ten rows (a third of a
+/// second at the tables' 30 frames a second): many segments.
+fn busy_hand_table(rows: usize) -> String {
+    let mut text = String::from(
+        "@relation busy\n@attribute Hand {NotMove, Move}\n\
+         @attribute ObjectActedOn {None, cube}\n@attribute ObjectInHand {None, cube}\n\
+         @attribute Activity {IdleMotion, Reach}\n@data\n",
+    );
+    for i in 0..rows {
+        text.push_str(if (i / 10) % 2 == 0 {
+            "NotMove,None,None,IdleMotion\n"
+        } else {
+            "Move,cube,None,Reach\n"
+        });
+    }
+    text
+}
+
+/// `segment FILE | head -1`, `classify FILE... | head -1`: the reader goes away and
+/// demoplan stops with a shell's SIGPIPE code, printing nothing (it printed `error: `).
+#[test]
+fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
+    let tmp = tempdir("closed-pipe");
+    std::fs::write(tmp.join("busy.arff"), busy_hand_table(40_000)).unwrap();
+    std::fs::write(tmp.join("small.arff"), busy_hand_table(40)).unwrap();
+    let many_tables: Vec<&str> = std::iter::repeat_n("small.arff", 1_000).collect();
+    let runs: [Vec<&str>; 3] = [
+        vec!["segment", "busy.arff"],
+        vec!["segment", "--json", "busy.arff"],
+        [&["classify"][..], &many_tables].concat(),
+    ];
+    for args in runs {
+        // Far more than a pipe holds (64 KB): the writer meets the closed pipe.
+        let full = demoplan().current_dir(&tmp).args(&args).output().unwrap();
+        assert_eq!(full.status.code(), Some(0), "{}", transcript(&full));
+        assert!(
+            full.stdout.len() > 128 * 1024,
+            "{}: {}",
+            args[0],
+            full.stdout.len()
+        );
+        let mut child = demoplan()
+            .current_dir(&tmp)
+            .args(&args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(141),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(out.stderr.is_empty(), "{args:?}: {}", transcript(&out));
+    }
+}
+
 fn unity_fixtures() -> PathBuf {
     fixtures().join("unity")
 }
@@ -2389,4 +2449,34 @@ fn learn_takes_a_folder_of_unity_logs_like_the_logs_in_it() {
     };
     let named = learn(&["logs/p01-d02.json", "logs/p01-d03.json"], "named.json");
     assert_eq!(learn(&["logs"], "folder.json"), named);
+}
+
+/// One mapping file serves every command: the import crate's keys for Unity logs
+/// (`max_age`, `[[entity]]`) and the `[labels]` that `classify` maps ARFF labels with.
+#[test]
+fn one_mapping_file_serves_classify_and_the_unity_commands() {
+    let mapping = demonstrations().join("one-mapping.toml");
+    let tables = format!("{}/../segment/tests/fixtures", env!("CARGO_MANIFEST_DIR"));
+    let classify = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt", "--mapping"])
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    // Pour is Put by the file's [labels]: no frame is left out.
+    assert!(String::from_utf8_lossy(&classify.stdout).starts_with(
+        "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
+    ));
+    assert!(classify.stderr.is_empty(), "{}", transcript(&classify));
+    let log = unity_fixtures().join("p01-d03.json");
+    let segment = demoplan()
+        .arg("segment")
+        .arg(&log)
+        .arg("--mapping")
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(segment.status.code(), Some(0), "{}", transcript(&segment));
+    assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
 }

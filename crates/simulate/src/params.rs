@@ -331,7 +331,7 @@ impl Default for SimParams {
             abort: Interval::new(0.0, 0.16),
             abort_fraction: Interval::new(0.35, 0.75),
             abort_redirect: Interval::new(0.55, 1.25),
-            regrasp: Interval::new(0.05, 0.35),
+            regrasp: Interval::new(0.0, 0.16),
             regrasp_grip: Interval::new(0.2, 0.35),
             regrasp_shift: Interval::new(0.008, 0.02),
             lift_away: Interval::new(0.06, 0.12),

@@ -43,7 +43,10 @@ const PAPER_LEVELS: [usize; 5] = [5, 11, 18, 23, 30];
 /// hover, straighten a cube they put down, ...): never the scene, the tracker or the thresholds.
 const SEARCH_SPACE: &[(&str, &[&str])] = &[
     ("adjust", &["[0.0, 0.2]", "[0.05, 0.35]", "[0.1, 0.5]"]),
-    ("rest_after_grasp", &["[0.45, 0.95]", "[0.55, 0.95]", "[0.65, 0.95]"]),
+    (
+        "rest_after_grasp",
+        &["[0.45, 0.95]", "[0.55, 0.95]", "[0.65, 0.95]"],
+    ),
     ("abort", &["[0.0, 0.16]", "[0.02, 0.25]", "[0.05, 0.35]"]),
     ("regrasp", &["[0.0, 0.16]", "[0.02, 0.25]", "[0.05, 0.35]"]),
     ("hover", &["[0.0, 0.2]", "[0.05, 0.4]", "[0.1, 0.6]"]),
@@ -172,11 +175,7 @@ fn report(params: &SimParams, seeds: &[u64]) -> Result<(), String> {
     println!("| **targeted** | | | | | | |");
     println!(
         "{}",
-        row(
-            "distinct operators",
-            col(&|s| s.operators as f64),
-            "30"
-        )
+        row("distinct operators", col(&|s| s.operators as f64), "30")
     );
     println!(
         "{}",
@@ -199,14 +198,15 @@ fn report(params: &SimParams, seeds: &[u64]) -> Result<(), String> {
             row(
                 &format!("top share {}", a.name()),
                 col(&|s| s.top_share[i]),
-                if *a == Activity::Put { "12/19 or less" } else { "-" }
+                if *a == Activity::Put {
+                    "12/19 or less"
+                } else {
+                    "-"
+                }
             )
         );
     }
-    println!(
-        "{}",
-        row("levels", col(&|s| s.levels.len() as f64), "5")
-    );
+    println!("{}", row("levels", col(&|s| s.levels.len() as f64), "5"));
     for (k, paper) in PAPER_LEVELS.iter().enumerate() {
         // A study with fewer levels keeps its last (full) domain for the later ones.
         println!(
@@ -235,7 +235,10 @@ fn report(params: &SimParams, seeds: &[u64]) -> Result<(), String> {
         "median distinct Put operators {puts} >= 4: {}",
         check(puts >= 4.0)
     );
-    println!("loss (squared relative distance of the medians): {:.4}", loss(&all));
+    println!(
+        "loss (squared relative distance of the medians): {:.4}",
+        loss(&all)
+    );
     Ok(())
 }
 
@@ -305,8 +308,10 @@ fn search(start: SimParams, seeds: &[u64]) -> Result<(), String> {
 fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
     let (a, b) = text.split_once('-').unwrap_or((text, text));
     let (a, b): (u64, u64) = (
-        a.parse().map_err(|_| format!("--seeds {text}: not FIRST-LAST"))?,
-        b.parse().map_err(|_| format!("--seeds {text}: not FIRST-LAST"))?,
+        a.parse()
+            .map_err(|_| format!("--seeds {text}: not FIRST-LAST"))?,
+        b.parse()
+            .map_err(|_| format!("--seeds {text}: not FIRST-LAST"))?,
     );
     if a > b {
         return Err(format!("--seeds {text}: empty range"));
@@ -330,8 +335,7 @@ fn main() -> Result<(), String> {
             "--params" => {
                 i += 1;
                 let path = args.get(i).ok_or("--params needs a file")?;
-                let text =
-                    std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
+                let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}"))?;
                 params = serde_json::from_str(&text).map_err(|e| format!("{path}: {e}"))?;
                 params.validate().map_err(|e| format!("{path}: {e}"))?;
             }

@@ -412,5 +412,9 @@ fn participants_are_draws_of_the_style_distributions() {
     }
     styles.sort_by(|a, b| a.0.total_cmp(&b.0));
     styles.dedup();
-    assert_eq!(styles.len(), 30, "two of 30 participants have the same style");
+    assert_eq!(
+        styles.len(),
+        30,
+        "two of 30 participants have the same style"
+    );
 }

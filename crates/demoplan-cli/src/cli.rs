@@ -142,7 +142,7 @@ pub enum Command {
     ///
     /// Prints per segment its hand, start, end, activity, the object in hand and the object
     /// acted on; `--json` adds the facts at the last frame before each segment and at its
-    /// last frame. ARFF hand-state tables (FILE.arff) are segmented too, without facts.
+    /// last frame. ARFF hand-state tables (FILE.arff, or ARFF by content) are segmented too, their states the hand's own facts.
     Segment {
         /// Recordings (JSON Lines) or ARFF hand-state tables.
         #[arg(value_name = "FILE", required = true)]
@@ -167,7 +167,8 @@ pub enum Command {
     /// write it with `-o`. Otherwise: classify the labelled frames of each FILE with the
     /// tree and compare with their labels.
     Classify {
-        /// Labelled frames: ARFF tables or simulated recordings.
+        /// Labelled frames: ARFF tables (by extension or content) or simulated
+        /// recordings.
         #[arg(value_name = "FILE", required_if_eq("learn", "true"))]
         files: Vec<PathBuf>,
         /// Learn a tree from the files.
@@ -185,6 +186,10 @@ pub enum Command {
         /// Grounding thresholds as TOML, for recordings.
         #[arg(long, value_name = "FILE")]
         config: Option<PathBuf>,
+        /// A TOML file whose `[labels]` table maps ARFF labels to activities
+        /// (`PourSomething = "Put"`), over the defaults (docs/grounding.md).
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
     },
     /// Draw one recording over time as SVG: per hand its speed, its distance to each
     /// object and its grip with the thresholds, and its segments as coloured bands (and
@@ -213,7 +218,9 @@ pub enum Command {
     /// atomically and durably; learners writing one library take turns through its lock
     /// file (FILE.lock), so none loses another's counts.
     Learn {
-        /// Recordings (JSON Lines).
+        /// Recordings (JSON Lines), ARFF hand-state tables, or folders: every recording
+        /// in a folder, sorted by name, without the simulator's `*.truth.jsonl` and
+        /// `simulation.json`.
         #[arg(value_name = "RECORDING", required = true)]
         files: Vec<PathBuf>,
         /// A library to add to (it may also be the output file).

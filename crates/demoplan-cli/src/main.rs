@@ -132,6 +132,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             tree,
             class,
             config,
+            mapping,
         } => commands::classify::run(commands::classify::ClassifyArgs {
             files,
             tree,
@@ -139,6 +140,7 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             out,
             class,
             config,
+            mapping,
         }),
         cli::Command::Timeline {
             file,

@@ -1101,7 +1101,7 @@ fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
 /// Malformed configuration, tree and ARFF files: exit 31 with file, line and field.
 #[test]
 fn malformed_demonstration_inputs_name_file_line_and_field() {
-    let cases: [(&str, &[&str]); 4] = [
+    let cases: [(&str, &[&str]); 9] = [
         (
             "unknown-field.toml",
             &[
@@ -1130,6 +1130,44 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
             ],
         ),
         ("short-row.arff", &["segment", "short-row.arff"]),
+        // ARFF by content, tab-separated, with a value that is not a number.
+        ("tab-not-a-number.txt", &["segment", "tab-not-a-number.txt"]),
+        (
+            "sparse-out-of-order.arff",
+            &[
+                "learn",
+                "sparse-out-of-order.arff",
+                "-o",
+                "never-written.json",
+            ],
+        ),
+        (
+            "unknown-activity.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unknown-activity.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unquoted-activity.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unquoted-activity.toml",
+                "hand-state.arff",
+            ],
+        ),
+        (
+            "unknown-mapping-key.toml",
+            &[
+                "classify",
+                "--mapping",
+                "unknown-mapping-key.toml",
+                "hand-state.arff",
+            ],
+        ),
     ];
     for (file, args) in cases {
         let out = demoplan()
@@ -1147,6 +1185,192 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
         assert!(out.stdout.is_empty(), "{file}: printed output");
         insta::assert_snapshot!(format!("demonstration-{file}"), transcript(&out));
     }
+}
+
+/// The Weka-style tables of `crates/segment/tests/fixtures` (whose tests hold what Weka
+/// reads for each): `segment` reads them whatever their separators, quotes, sparse rows
+/// or extension; `classify` maps their labels, leaves out the frames of labels it does
+/// not know, says how many, and names those labels once with their counts.
+#[test]
+fn weka_tables_segment_and_classify_through_the_label_map() {
+    let tables = workspace().join("crates/segment/tests/fixtures");
+    // Without a minimum duration, so that every row of these short tables shows.
+    let out = demoplan()
+        .current_dir(&tables)
+        .arg("segment")
+        .arg("--config")
+        .arg(demonstrations().join("no-minimum-duration.toml"))
+        .args([
+            "tabs.arff",
+            "quoted.arff",
+            "sparse.arff",
+            "recogniser-labels.txt",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    insta::assert_snapshot!("segment-weka-tables", transcript(&out));
+
+    // recogniser-labels.txt: 14 frames, 3 labelled Pour (unknown). Of the other 11, the
+    // tree gives the label's activity for all but Release_2 (a still, empty, open hand:
+    // Idle by Table 1, Put by the label map).
+    let classify = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt"])
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    let stdout = String::from_utf8_lossy(&classify.stdout);
+    assert!(
+        stdout.starts_with(
+            "recogniser-labels.txt: 11 labelled hand frames, 10 agree with the tree (90.91%); \
+             3 left out, their labels not in the label map\n"
+        ),
+        "{stdout}"
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&classify.stderr),
+        "warning: recogniser-labels.txt:17: labels the label map does not know, left out: Pour (3 frames)\n"
+    );
+    // With Pour mapped to Put every frame counts; ToolUse with the object in hand is Put
+    // by Table 1 too.
+    let mapped = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt", "--mapping"])
+        .arg(demonstrations().join("pour-is-put.toml"))
+        .output()
+        .unwrap();
+    assert_eq!(mapped.status.code(), Some(0), "{}", transcript(&mapped));
+    assert!(String::from_utf8_lossy(&mapped.stdout).starts_with(
+        "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
+    ));
+    assert!(mapped.stderr.is_empty(), "{}", transcript(&mapped));
+}
+
+/// `learn` reads ARFF hand-state tables directly: operators over the hand's own facts.
+#[test]
+fn learn_reads_hand_state_tables() {
+    let tmp = tempdir("learn-arff");
+    let library = tmp.join("library.json");
+    let out = demoplan()
+        .current_dir(demonstrations())
+        .args(["learn", "hand-state.arff", "-o"])
+        .arg(&library)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.starts_with("hand-state.arff: 5 activities, 5 new operator(s)\n"),
+        "{stdout}"
+    );
+    let cards = demoplan().arg("operators").arg(&library).output().unwrap();
+    let cards = String::from_utf8_lossy(&cards.stdout);
+    // The Take closes the hand on the object it reached: its effects are the hand's.
+    let take = cards
+        .split("\n\n")
+        .find(|c| c.starts_with("take "))
+        .unwrap_or_else(|| panic!("no take in\n{cards}"));
+    assert!(take.contains("?h - hand, ?x - thing"), "{take}");
+    assert!(
+        take.contains("inHand(?h, ?x)     false         true"),
+        "{take}"
+    );
+    assert!(
+        take.contains("actedOn(?h, ?x)    true          false"),
+        "{take}"
+    );
+}
+
+/// `learn DIR` learns every recording of a simulation folder, as listing them does;
+/// the simulator's truth files, given by a glob, are skipped and said so.
+#[test]
+fn learn_takes_a_folder_and_skips_the_simulators_truth() {
+    let tmp = tempdir("learn-folder");
+    let sim = tmp.join("sim");
+    let run = demoplan()
+        .args([
+            "simulate",
+            "--participants",
+            "1",
+            "--per-participant",
+            "3",
+            "-o",
+        ])
+        .arg(&sim)
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    let mut all: Vec<PathBuf> = std::fs::read_dir(&sim)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    all.sort();
+    let recordings: Vec<&PathBuf> = all
+        .iter()
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy();
+            name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
+        })
+        .collect();
+    assert_eq!(recordings.len(), 3);
+    let learn = |args: &[&Path], out: &Path| {
+        let o = demoplan()
+            .arg("learn")
+            .args(args)
+            .arg("-o")
+            .arg(out)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0), "{}", transcript(&o));
+        o
+    };
+    let listed = tmp.join("listed.json");
+    learn(
+        &recordings.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
+        &listed,
+    );
+    let folder = tmp.join("folder.json");
+    let o = learn(&[sim.as_path()], &folder);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr),
+        format!(
+            "{}: 3 recording(s); skipped 4 file(s) of the simulator (*.truth.jsonl, simulation.json)\n",
+            sim.display()
+        )
+    );
+    assert_eq!(
+        std::fs::read(&folder).unwrap(),
+        std::fs::read(&listed).unwrap()
+    );
+    // `sim/*` as a shell expands it: truth files and simulation.json among them.
+    let globbed = tmp.join("globbed.json");
+    let o = learn(
+        &all.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
+        &globbed,
+    );
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        stderr.starts_with("skipped 4 file(s) of the simulator, not recordings: "),
+        "{stderr}"
+    );
+    assert_eq!(
+        std::fs::read(&globbed).unwrap(),
+        std::fs::read(&listed).unwrap()
+    );
+    // A folder with no recording is a command line error.
+    let empty = tmp.join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    std::fs::write(empty.join("notes.md"), "nothing here\n").unwrap();
+    let o = demoplan()
+        .arg("learn")
+        .arg(&empty)
+        .arg("-o")
+        .arg(tmp.join("never.json"))
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(36), "{}", transcript(&o));
+    assert!(!tmp.join("never.json").exists());
 }
 
 #[test]

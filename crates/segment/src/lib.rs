@@ -43,14 +43,16 @@
 mod arff;
 mod c45;
 pub mod evaluate;
+mod labels;
 mod segmenter;
 mod tree;
 
 pub use arff::{
-    dataset, read_arff, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable, ArffWarning,
-    HandFrames, LabelledFrame,
+    dataset, is_arff_text, read_arff, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable,
+    ArffWarning, FrameActivities, HandFrames, LabelledFrame, WEKA_DUMMY_STRING,
 };
 pub use c45::{add_errors, Case, Dataset, C45};
+pub use labels::{LabelMap, LabelMapError, UnknownLabel};
 pub use segmenter::{Segment, Segmenter};
 pub use tree::{
     Activity, ActivityTree, Attribute, DecisionTree, Feature, Node, TreeError, TREE_FORMAT,

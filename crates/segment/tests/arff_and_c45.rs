@@ -78,7 +78,7 @@ fn a_hand_state_table_learns_table_one() {
         min_cases: 1.0,
         ..C45::default()
     }
-    .learn(&frames.dataset());
+    .learn(&frames.dataset(&segment::LabelMap::default()));
     let activities = ActivityTree::new(tree).unwrap();
     let table_one = ActivityTree::table_one();
     for f in &frames.frames {
@@ -143,7 +143,7 @@ fn arff_mistakes_name_line_and_field() {
         "a",
     );
     check("@relation r\n@atribute a {x}\n@data\n", 2, "@atribute");
-    check("@relation r\n@attribute a {x}\n@data\n'x\n", 4, "@data");
+    check("@relation r\n@attribute a {x}\n@data\n'x\n", 4, "a");
     check("@relation r\n@attribute a {x}\n", 2, "@data");
     let table = read_arff("@relation r\n@attribute Hand {Move}\n@attribute ObjectActedOn {None}\n@attribute ObjectInHand {None}\n@data\nRun,None,None\n").unwrap();
     let e = table.hand_frames(30.0).err().unwrap();

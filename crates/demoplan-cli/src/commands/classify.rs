@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use grounding::HandFacts;
-use segment::{ActivityTree, Feature, C45};
+use segment::{ActivityTree, Feature, LabelMap, C45};
 
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
@@ -27,6 +27,8 @@ pub struct ClassifyArgs {
     pub out: Option<PathBuf>,
     pub class: Option<String>,
     pub config: Option<PathBuf>,
+    /// A mapping file whose `[labels]` table maps ARFF labels to activities.
+    pub mapping: Option<PathBuf>,
 }
 
 pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
@@ -49,37 +51,57 @@ pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
     }
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
     let config = demo_input::config(args.config.as_deref())?;
+    let labels = demo_input::label_map(args.mapping.as_deref())?;
     let mut out = String::new();
     for path in &args.files {
-        let cases = labelled(path, &config)?;
-        report(&mut out, path, &tree, &cases.frames, &cases.labels);
+        let cases = labelled(path, &config, &labels)?;
+        report(&mut out, path, &tree, &cases);
     }
     print!("{out}");
     Ok(ExitCode::SUCCESS)
 }
 
-/// Frames of hands with labels (indices into `labels`).
+/// Frames of hands with labels (indices into `labels`, activity names).
 struct Labelled {
     frames: Vec<(HandFacts, usize)>,
     labels: Vec<String>,
     hand_state: bool,
+    /// Frames left out: their labels are not in the label map.
+    left_out: usize,
 }
 
-fn labelled(path: &Path, config: &grounding::GroundingConfig) -> Result<Labelled, Failure> {
+/// The labelled frames of a file. An ARFF table's labels go through the label map;
+/// those it does not know are left out and named on standard error, once per file.
+fn labelled(
+    path: &Path,
+    config: &grounding::GroundingConfig,
+    map: &LabelMap,
+) -> Result<Labelled, Failure> {
     if demo_input::is_arff(path) {
         let frames = demo_input::hand_frames(path)?;
-        let cases = frames
-            .frames
-            .iter()
-            .filter_map(|f| {
-                let label = f.label.as_ref()?;
-                Some((f.hand, frames.labels.iter().position(|l| l == label)?))
-            })
-            .collect();
+        let mapped = frames.activities(map);
+        if let Some(w) = mapped.warning() {
+            demo_input::warn(path, &[w]);
+        }
+        let mut labels: Vec<String> = Vec::new();
+        let mut cases = Vec::new();
+        for (f, a) in frames.frames.iter().zip(&mapped.activities) {
+            let Some(a) = a else { continue };
+            let name = a.name();
+            let k = match labels.iter().position(|l| l == name) {
+                Some(k) => k,
+                None => {
+                    labels.push(name.to_string());
+                    labels.len() - 1
+                }
+            };
+            cases.push((f.hand, k));
+        }
         return Ok(Labelled {
             frames: cases,
-            labels: frames.labels,
+            labels,
             hand_state: frames.has_hand_state,
+            left_out: mapped.left_out(),
         });
     }
     let tree = ActivityTree::table_one();
@@ -113,16 +135,12 @@ fn labelled(path: &Path, config: &grounding::GroundingConfig) -> Result<Labelled
         frames,
         labels,
         hand_state: true,
+        left_out: 0,
     })
 }
 
-fn report(
-    out: &mut String,
-    path: &Path,
-    tree: &ActivityTree,
-    frames: &[(HandFacts, usize)],
-    labels: &[String],
-) {
+fn report(out: &mut String, path: &Path, tree: &ActivityTree, cases: &Labelled) {
+    let (frames, labels) = (&cases.frames, &cases.labels);
     let predicted: Vec<&str> = frames
         .iter()
         .map(|(h, _)| tree.classify(h).name())
@@ -132,9 +150,13 @@ fn report(
         .zip(&predicted)
         .filter(|((_, l), p)| labels[*l] == **p)
         .count();
+    let left_out = match cases.left_out {
+        0 => String::new(),
+        n => format!("; {n} left out, their labels not in the label map"),
+    };
     let _ = writeln!(
         out,
-        "{}: {} labelled hand frames, {} agree with the tree ({:.2}%)",
+        "{}: {} labelled hand frames, {} agree with the tree ({:.2}%){left_out}",
         path.display(),
         frames.len(),
         agree,
@@ -188,11 +210,12 @@ fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
         ));
     }
     let config = demo_input::config(args.config.as_deref())?;
+    let map = demo_input::label_map(args.mapping.as_deref())?;
     let mut labels: Vec<String> = Vec::new();
     let mut cases: Vec<(HandFacts, usize)> = Vec::new();
     let mut hand_state = true;
     for path in &args.files {
-        let l = labelled(path, &config)?;
+        let l = labelled(path, &config, &map)?;
         hand_state &= l.hand_state;
         for (hand, k) in l.frames {
             let name = &l.labels[k];

@@ -2,12 +2,14 @@
 //! trees and ARFF tables (errors with file, line and field, exit 31), and running
 //! grounding and segmentation over a recording.
 
+use std::fmt::Write as _;
+use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
 use grounding::{GroundedFrame, Grounder, GroundingConfig};
 use miette::NamedSource;
 use recording::{Frame, Header};
-use segment::{ActivityTree, DecisionTree, HandFrames, Segment, Segmenter};
+use segment::{ActivityTree, DecisionTree, HandFrames, LabelMap, Segment, Segmenter};
 
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
@@ -136,10 +138,82 @@ pub fn activity_tree(path: Option<&Path>) -> Result<ActivityTree, Failure> {
     })
 }
 
-/// Whether a path names an ARFF table (by its extension).
+/// Whether a path names an ARFF table: by its extension `.arff`, or by its content
+/// (`segment::is_arff_text` on the file's first 64 KiB), since recognisers' tables often
+/// ship as `.txt`. A file that cannot be read is not ARFF here; reading it later says why.
 pub fn is_arff(path: &Path) -> bool {
-    path.extension()
+    if path
+        .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("arff"))
+    {
+        return true;
+    }
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut start = Vec::with_capacity(4096);
+    if std::io::Read::take(file, 64 * 1024)
+        .read_to_end(&mut start)
+        .is_err()
+    {
+        return false;
+    }
+    segment::is_arff_text(&String::from_utf8_lossy(&start))
+}
+
+/// The label map: the defaults, with the `[labels]` table of a mapping file on top
+/// (`LABEL = "Activity"`). Any other key is an input error, as is an activity that does
+/// not exist, each with the file's line and the key.
+pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct MappingFile {
+        #[serde(default)]
+        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
+    }
+    let Some(path) = path else {
+        return Ok(LabelMap::default());
+    };
+    let text = input::read_text(path)?;
+    let at = |offset: usize| {
+        let line = text[..offset.min(text.len())].matches('\n').count() + 1;
+        let column = offset - line_start(&text, line).unwrap_or(0) + 1;
+        (line, column)
+    };
+    let file: MappingFile = toml::from_str(&text).map_err(|e| {
+        let (line, column) = e.span().map_or((0, 0), |s| at(s.start));
+        let key = text
+            .lines()
+            .nth(line.saturating_sub(1))
+            .and_then(|l| l.split('=').next())
+            .map(|k| k.trim().trim_matches(['[', ']']).trim().to_string())
+            .unwrap_or_default();
+        text_failure(
+            path,
+            &text,
+            "demoplan::mapping",
+            line,
+            column,
+            &key,
+            e.message().trim(),
+        )
+    })?;
+    let mut map = LabelMap::default();
+    for (label, activity) in &file.labels {
+        map.set(label, activity.get_ref()).map_err(|e| {
+            let (line, column) = at(activity.span().start);
+            text_failure(
+                path,
+                &text,
+                "demoplan::mapping",
+                line,
+                column,
+                &format!("labels.{label}"),
+                &e.to_string(),
+            )
+        })?;
+    }
+    Ok(map)
 }
 
 /// An ARFF table, read and checked; its text is returned for later errors.
@@ -172,11 +246,123 @@ pub fn hand_frames(path: &Path) -> Result<HandFrames, Failure> {
     Ok(frames)
 }
 
+/// An ARFF hand-state table segmented: its hand's own facts are the states (it has no
+/// geometry, so no grounding).
+pub fn segment_arff(
+    path: &Path,
+    tree: &ActivityTree,
+    min_duration: f64,
+) -> Result<Segmented, Failure> {
+    let frames = hand_frames(path)?;
+    let (space, segments) = frames.segments(tree, min_duration);
+    Ok(Segmented {
+        space,
+        frames: frames.frames.len() as u64,
+        duration: frames.duration(),
+        header: frames.header,
+        segments,
+    })
+}
+
 /// Prints warnings about what an ARFF reader accepted.
 pub fn warn(path: &Path, warnings: &[segment::ArffWarning]) {
     for w in warnings {
         eprintln!("warning: {}:{}: {}", path.display(), w.line, w.message);
     }
+}
+
+/// What `learn` reads from its arguments: recordings and ARFF tables as given, and every
+/// recording in a folder (native `.jsonl` and ARFF by content), sorted by name. The
+/// simulator's ground truth (`*.truth.jsonl`) and its `simulation.json` are skipped,
+/// also when given by name (a glob such as `demos/*.jsonl` names the truth files), and
+/// what was skipped is said on standard error. No recording at all is a command line
+/// error.
+pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
+    fn simulator_file(name: &str) -> bool {
+        name.ends_with(".truth.jsonl") || name == "simulation.json"
+    }
+    let name_of = |p: &Path| {
+        p.file_name()
+            .map(|n| n.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    };
+    let mut out = Vec::new();
+    let mut skipped_given = Vec::new();
+    for path in paths {
+        if !path.is_dir() {
+            if simulator_file(&name_of(path)) {
+                skipped_given.push(path.display().to_string());
+            } else {
+                out.push(path.clone());
+            }
+            continue;
+        }
+        let entries = std::fs::read_dir(path).map_err(|e| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!("cannot read folder {}: {e}", path.display()),
+            )
+        })?;
+        let mut files = Vec::new();
+        for entry in entries {
+            let entry = entry.map_err(|e| {
+                Failure::plain(
+                    ExitCode::USAGE,
+                    format!("cannot read folder {}: {e}", path.display()),
+                )
+            })?;
+            if entry.file_type().is_ok_and(|t| t.is_file()) {
+                files.push(entry.path());
+            }
+        }
+        files.sort();
+        let (mut found, mut truth, mut others) = (0, 0, Vec::new());
+        for file in files {
+            let name = name_of(&file);
+            if simulator_file(&name) {
+                truth += 1;
+            } else if name.ends_with(".jsonl") || is_arff(&file) {
+                found += 1;
+                out.push(file);
+            } else {
+                others.push(name);
+            }
+        }
+        if found == 0 {
+            return Err(Failure::plain(
+                ExitCode::USAGE,
+                format!(
+                    "{} holds no recording (native .jsonl, or an ARFF table)",
+                    path.display()
+                ),
+            ));
+        }
+        let mut note = format!("{}: {found} recording(s)", path.display());
+        if truth > 0 {
+            let _ = write!(
+                note,
+                "; skipped {truth} file(s) of the simulator (*.truth.jsonl, simulation.json)"
+            );
+        }
+        if !others.is_empty() {
+            let _ = write!(note, "; skipped, not recordings: {}", others.join(", "));
+        }
+        eprintln!("{note}");
+    }
+    if !skipped_given.is_empty() {
+        eprintln!(
+            "skipped {} file(s) of the simulator, not recordings: {}",
+            skipped_given.len(),
+            skipped_given.join(", ")
+        );
+    }
+    if out.is_empty() {
+        return Err(Failure::plain(
+            ExitCode::USAGE,
+            "no recording to learn from (the simulator's *.truth.jsonl and simulation.json are not recordings)",
+        ));
+    }
+    Ok(out)
 }
 
 /// A recording grounded and segmented.

@@ -126,10 +126,18 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     };
     let config = demo_input::config(args.config.as_deref())?;
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
-    let segment =
-        |path: &Path| demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {});
-    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(args.files.len());
-    for path in &args.files {
+    // ARFF hand-state tables are segmented as they are (no geometry to ground); their
+    // states hold the hand's own facts only (docs/operators.md).
+    let segment = |path: &Path| {
+        if demo_input::is_arff(path) {
+            demo_input::segment_arff(path, &tree, config.min_duration)
+        } else {
+            demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})
+        }
+    };
+    let files = demo_input::recordings(&args.files)?;
+    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(files.len());
+    for path in &files {
         let hash = file_hash(path)?;
         let known = before.as_ref().is_some_and(|l| l.has_recording(&hash))
             || inputs.iter().any(|i| i.hash == hash);

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use grounding::{FactSpace, State};
 use recording::{EntityId, Header};
-use segment::{Segment, Segmenter};
+use segment::Segment;
 use serde_json::{json, Value};
 
 use crate::commands::demo_input::{self, Segmented};
@@ -35,24 +35,7 @@ pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
     }
     for (i, path) in args.files.iter().enumerate() {
         let segmented = if demo_input::is_arff(path) {
-            let frames = demo_input::hand_frames(path)?;
-            let space = FactSpace::new(&frames.header);
-            let mut segmenter = Segmenter::new(&[EntityId(0)], tree.clone(), config.min_duration);
-            let empty = State::default();
-            for f in &frames.frames {
-                segmenter.push(f.time, &[f.hand], &empty);
-            }
-            let duration = match (frames.frames.first(), frames.frames.last()) {
-                (Some(a), Some(b)) => b.time - a.time,
-                _ => 0.0,
-            };
-            Segmented {
-                space,
-                frames: frames.frames.len() as u64,
-                duration,
-                header: frames.header,
-                segments: segmenter.finish(),
-            }
+            demo_input::segment_arff(path, &tree, config.min_duration)?
         } else {
             demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})?
         };

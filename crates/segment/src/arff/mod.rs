@@ -9,11 +9,17 @@
 
 use std::collections::BTreeSet;
 
-use grounding::HandFacts;
+use grounding::{Fact, FactSpace, HandFacts, Predicate, State};
 use recording::{Entity, EntityId, EntityKind, Header, Vec3};
 
 use crate::c45::{Case, Dataset};
+use crate::labels::{LabelMap, UnknownLabel};
+use crate::segmenter::{Segment, Segmenter};
+use crate::tree::{Activity, ActivityTree};
+
+mod reader;
 use crate::tree::{Attribute, Feature};
+pub use reader::{is_arff_text, read_arff, WEKA_DUMMY_STRING};
 
 /// The type of an ARFF attribute.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -24,8 +30,9 @@ pub enum ArffKind {
     Numeric,
     /// `string`.
     String,
-    /// `date [format]`.
-    Date,
+    /// `date [format]`: the format as written (Java's `SimpleDateFormat`), or Weka's
+    /// default `yyyy-MM-dd'T'HH:mm:ss`. Values are kept as text, not parsed.
+    Date(String),
 }
 
 /// An attribute of an ARFF table.
@@ -82,260 +89,17 @@ pub struct ArffWarning {
     pub message: String,
 }
 
-fn error(line: usize, column: usize, field: &str, message: impl Into<String>) -> ArffError {
+pub(crate) fn error(
+    line: usize,
+    column: usize,
+    field: &str,
+    message: impl Into<String>,
+) -> ArffError {
     ArffError {
         line,
         column,
         field: field.into(),
         message: message.into(),
-    }
-}
-
-/// Reads an ARFF file (dense data; `%` comments; quoted names and values).
-pub fn read_arff(text: &str) -> Result<ArffTable, ArffError> {
-    let mut relation = None;
-    let mut attributes: Vec<ArffAttribute> = Vec::new();
-    let mut rows = Vec::new();
-    let mut in_data = false;
-    for (i, raw_line) in text.lines().enumerate() {
-        let line = i + 1;
-        let l = raw_line.trim();
-        if l.is_empty() || l.starts_with('%') {
-            continue;
-        }
-        let indent = raw_line.len() - raw_line.trim_start().len();
-        if in_data {
-            if l.starts_with('{') {
-                return Err(error(
-                    line,
-                    indent + 1,
-                    "@data",
-                    "sparse rows ({index value, ...}) are not supported",
-                ));
-            }
-            let values =
-                split_values(l).map_err(|(c, m)| error(line, indent + c + 1, "@data", m))?;
-            if values.len() != attributes.len() {
-                let field = attributes
-                    .get(values.len().min(attributes.len().saturating_sub(1)))
-                    .map_or("@data", |a| a.name.as_str());
-                return Err(error(
-                    line,
-                    indent + 1,
-                    field,
-                    format!(
-                        "{} values, but the header declares {} attributes",
-                        values.len(),
-                        attributes.len()
-                    ),
-                ));
-            }
-            for (a, v) in attributes.iter().zip(&values) {
-                if let (ArffKind::Numeric, Some(v)) = (&a.kind, v) {
-                    if v.parse::<f64>().map_or(true, |x| !x.is_finite()) {
-                        return Err(error(
-                            line,
-                            indent + 1,
-                            &a.name,
-                            format!("`{v}` is not a number"),
-                        ));
-                    }
-                }
-            }
-            rows.push(ArffRow { line, values });
-            continue;
-        }
-        let (keyword, rest) = split_keyword(l);
-        match keyword.to_ascii_lowercase().as_str() {
-            "@relation" => {
-                let (name, _) =
-                    take_name(rest).map_err(|m| error(line, indent + 1, "@relation", m))?;
-                relation = Some(name);
-            }
-            "@attribute" => {
-                let (name, spec) =
-                    take_name(rest).map_err(|m| error(line, indent + 1, "@attribute", m))?;
-                if attributes.iter().any(|a| a.name == name) {
-                    return Err(error(
-                        line,
-                        indent + 1,
-                        &name,
-                        format!("attribute `{name}` is declared twice"),
-                    ));
-                }
-                let spec = spec.trim();
-                let kind = if let Some(body) = spec.strip_prefix('{') {
-                    let body = body.trim_end();
-                    let body = body.strip_suffix('}').ok_or_else(|| {
-                        error(line, indent + 1, &name, "a nominal type ends with `}`")
-                    })?;
-                    let values =
-                        split_values(body).map_err(|(_, m)| error(line, indent + 1, &name, m))?;
-                    ArffKind::Nominal(values.into_iter().flatten().collect())
-                } else {
-                    match spec
-                        .split_whitespace()
-                        .next()
-                        .unwrap_or("")
-                        .to_ascii_lowercase()
-                        .as_str()
-                    {
-                        "numeric" | "real" | "integer" => ArffKind::Numeric,
-                        "string" => ArffKind::String,
-                        "date" => ArffKind::Date,
-                        "relational" => {
-                            return Err(error(
-                                line,
-                                indent + 1,
-                                &name,
-                                "relational attributes are not supported",
-                            ))
-                        }
-                        other => {
-                            return Err(error(
-                                line,
-                                indent + 1,
-                                &name,
-                                format!(
-                                    "unknown type `{other}` (numeric, string, date or {{values}})"
-                                ),
-                            ))
-                        }
-                    }
-                };
-                attributes.push(ArffAttribute { name, kind, line });
-            }
-            "@data" => {
-                if attributes.is_empty() {
-                    return Err(error(
-                        line,
-                        indent + 1,
-                        "@data",
-                        "no @attribute before @data",
-                    ));
-                }
-                in_data = true;
-            }
-            _ => {
-                return Err(error(
-                    line,
-                    indent + 1,
-                    keyword,
-                    format!("expected @relation, @attribute or @data, found `{keyword}`"),
-                ))
-            }
-        }
-    }
-    if !in_data {
-        return Err(error(
-            text.lines().count().max(1),
-            0,
-            "@data",
-            "no @data section",
-        ));
-    }
-    Ok(ArffTable {
-        relation: relation.unwrap_or_default(),
-        attributes,
-        rows,
-    })
-}
-
-fn split_keyword(l: &str) -> (&str, &str) {
-    match l.find(|c: char| c.is_whitespace()) {
-        Some(p) => (&l[..p], &l[p..]),
-        None => (l, ""),
-    }
-}
-
-/// A name (possibly quoted) and what follows it.
-fn take_name(s: &str) -> Result<(String, &str), String> {
-    let s = s.trim_start();
-    match s.chars().next() {
-        None => Err("a name is missing".into()),
-        Some(q @ ('\'' | '"')) => {
-            let mut out = String::new();
-            let mut chars = s.char_indices().skip(1);
-            while let Some((i, c)) = chars.next() {
-                if c == '\\' {
-                    if let Some((_, n)) = chars.next() {
-                        out.push(n);
-                    }
-                } else if c == q {
-                    return Ok((out, &s[i + 1..]));
-                } else {
-                    out.push(c);
-                }
-            }
-            Err("the quoted name is not closed".into())
-        }
-        Some(_) => {
-            let end = s
-                .find(|c: char| c.is_whitespace() || c == '{')
-                .unwrap_or(s.len());
-            Ok((s[..end].to_string(), &s[end..]))
-        }
-    }
-}
-
-/// Comma-separated values, quoted or not; `?` is unknown. Errors give a column.
-fn split_values(s: &str) -> Result<Vec<Option<String>>, (usize, String)> {
-    let mut out = Vec::new();
-    let bytes: Vec<char> = s.chars().collect();
-    let mut i = 0;
-    loop {
-        while i < bytes.len() && bytes[i].is_whitespace() {
-            i += 1;
-        }
-        let start = i;
-        let value;
-        if i < bytes.len() && (bytes[i] == '\'' || bytes[i] == '"') {
-            let q = bytes[i];
-            i += 1;
-            let mut v = String::new();
-            loop {
-                match bytes.get(i) {
-                    None => return Err((start, "the quoted value is not closed".into())),
-                    Some('\\') => {
-                        if let Some(&c) = bytes.get(i + 1) {
-                            v.push(c);
-                        }
-                        i += 2;
-                    }
-                    Some(&c) if c == q => {
-                        i += 1;
-                        break;
-                    }
-                    Some(&c) => {
-                        v.push(c);
-                        i += 1;
-                    }
-                }
-            }
-            value = Some(v);
-            while i < bytes.len() && bytes[i].is_whitespace() {
-                i += 1;
-            }
-        } else {
-            while i < bytes.len() && bytes[i] != ',' {
-                i += 1;
-            }
-            let v: String = bytes[start..i].iter().collect();
-            let v = v.trim().to_string();
-            if v.is_empty() {
-                return Err((start, "a value is missing".into()));
-            }
-            value = if v == "?" { None } else { Some(v) };
-        }
-        out.push(value);
-        match bytes.get(i) {
-            None => return Ok(out),
-            Some(',') => i += 1,
-            Some(_) => return Err((i, "expected `,` after a quoted value".into())),
-        }
-        if i >= bytes.len() {
-            return Err((i, "a value is missing after the last `,`".into()));
-        }
     }
 }
 
@@ -702,24 +466,156 @@ impl ArffTable {
     }
 }
 
+/// The activities of a table's labels, by a [`LabelMap`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FrameActivities {
+    /// Per frame, the activity of its label; `None` without a label or when the map
+    /// does not know it.
+    pub activities: Vec<Option<Activity>>,
+    /// The labels the map does not know, in order of first appearance, with counts.
+    pub unknown: Vec<UnknownLabel>,
+}
+
+impl FrameActivities {
+    /// Frames whose label the map does not know.
+    pub fn left_out(&self) -> usize {
+        self.unknown.iter().map(|u| u.frames).sum()
+    }
+
+    /// One warning naming every unknown label with its count, if there is one.
+    pub fn warning(&self) -> Option<ArffWarning> {
+        let first = self.unknown.first()?;
+        let list: Vec<String> = self
+            .unknown
+            .iter()
+            .map(|u| {
+                let s = if u.frames == 1 { "" } else { "s" };
+                format!("{} ({} frame{s})", u.label, u.frames)
+            })
+            .collect();
+        Some(ArffWarning {
+            line: first.line,
+            message: format!(
+                "labels the label map does not know, left out: {}",
+                list.join(", ")
+            ),
+        })
+    }
+}
+
 impl HandFrames {
+    /// The activity of each frame's label by `map`, and the labels it does not know.
+    pub fn activities(&self, map: &LabelMap) -> FrameActivities {
+        let mut unknown: Vec<UnknownLabel> = Vec::new();
+        let activities = self
+            .frames
+            .iter()
+            .map(|f| {
+                let label = f.label.as_deref()?;
+                let activity = map.activity(label);
+                if activity.is_none() {
+                    match unknown.iter_mut().find(|u| u.label == label) {
+                        Some(u) => u.frames += 1,
+                        None => unknown.push(UnknownLabel {
+                            label: label.to_string(),
+                            frames: 1,
+                            line: f.line,
+                        }),
+                    }
+                }
+                activity
+            })
+            .collect();
+        FrameActivities {
+            activities,
+            unknown,
+        }
+    }
+
     /// The labelled frames as a dataset for C4.5 over the hand features (`handMove`,
-    /// `actedOn`, `inHand`, and `handOpen` when the table has it), class `Activity`.
-    pub fn dataset(&self) -> Dataset {
+    /// `actedOn`, `inHand`, and `handOpen` when the table has it), class `Activity`:
+    /// the activities of their labels by `map`, in order of first appearance. Frames
+    /// whose label the map does not know are left out.
+    pub fn dataset(&self, map: &LabelMap) -> Dataset {
         let mut features = vec![Feature::HandMove, Feature::ActedOn, Feature::InHand];
         if self.has_hand_state {
             features.push(Feature::HandOpen);
         }
+        let activities = self.activities(map).activities;
+        let mut classes: Vec<Activity> = Vec::new();
+        for a in activities.iter().flatten() {
+            if !classes.contains(a) {
+                classes.push(*a);
+            }
+        }
+        let names: Vec<String> = classes.iter().map(|a| a.name().to_string()).collect();
         dataset(
             &features,
-            &self.labels,
-            self.frames.iter().filter_map(|f| {
-                let label = f.label.as_ref()?;
-                Some((f.hand, self.labels.iter().position(|l| l == label)?))
+            &names,
+            self.frames.iter().zip(&activities).filter_map(|(f, a)| {
+                let a = (*a)?;
+                Some((f.hand, classes.iter().position(|&c| c == a)?))
             }),
         )
     }
+
+    /// The fact space of the table's scene: one hand and the objects it names.
+    pub fn fact_space(&self) -> FactSpace {
+        FactSpace::new(&self.header)
+    }
+
+    /// The state of one frame: its hand's own facts, which are all a hand-state table
+    /// has. `handMove`; `handOpen` when the table says so (a table without `HandState`
+    /// never has it); `actedOn` and `inHand` of the objects named. No `graspable`,
+    /// `inTouch` or `onTop`: the table has no geometry.
+    pub fn state(&self, space: &FactSpace, frame: &LabelledFrame) -> State {
+        let mut state = space.empty_state();
+        let hand = HAND_ID;
+        let hand_facts = &frame.hand;
+        let mut add = |fact: Fact| {
+            if let Some(id) = space.id(&fact) {
+                state.insert(id);
+            }
+        };
+        if hand_facts.moving {
+            add(Fact::unary(Predicate::HandMove, hand));
+        }
+        if hand_facts.open == Some(true) {
+            add(Fact::unary(Predicate::HandOpen, hand));
+        }
+        if let Some(o) = hand_facts.acted_on {
+            add(Fact::binary(Predicate::ActedOn, hand, o));
+        }
+        if let Some(o) = hand_facts.in_hand {
+            add(Fact::binary(Predicate::InHand, hand, o));
+        }
+        state
+    }
+
+    /// Segments the table's hand with `tree` and the minimum duration (s), each
+    /// segment with its start and end [`HandFrames::state`]; returns the fact space the
+    /// states belong to, for learning operators from them.
+    pub fn segments(&self, tree: &ActivityTree, min_duration: f64) -> (FactSpace, Vec<Segment>) {
+        let space = self.fact_space();
+        let mut segmenter = Segmenter::new(&[HAND_ID], tree.clone(), min_duration);
+        for f in &self.frames {
+            let state = self.state(&space, f);
+            segmenter.push(f.time, &[f.hand], &state);
+        }
+        (space, segmenter.finish())
+    }
+
+    /// Seconds from the first frame to the last.
+    pub fn duration(&self) -> f64 {
+        match (self.frames.first(), self.frames.last()) {
+            (Some(a), Some(b)) => b.time - a.time,
+            _ => 0.0,
+        }
+    }
 }
+
+/// The one hand of a hand-state table: the first entity of [`HandFrames::header`].
+const HAND_ID: EntityId = EntityId(0);
 
 /// A dataset over hand features from `(hand, class index)` pairs.
 pub fn dataset(

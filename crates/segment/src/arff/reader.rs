@@ -1,0 +1,751 @@
+//! The ARFF text format as Weka's `ArffLoader` reads it.
+//!
+//! Weka reads ARFF with a `java.io.StreamTokenizer` set up so that every character up to
+//! the space, and the comma, separate tokens (so values are separated by commas, spaces,
+//! tabs or any mix, and runs of separators count as one); `%` starts a comment that runs
+//! to the end of the line; `'` and `"` quote a token (names and nominal values too), with
+//! Java's escapes (`\n`, `\t`, `\'`, `\\`, octal `\101`, ...); `{` and `}` are tokens of
+//! their own; and the end of a line ends a header declaration or a data row. This module
+//! is that tokenizer and the grammar over it:
+//!
+//! - `@relation NAME`, `@attribute NAME TYPE` and `@data`, in any case, `@relation`
+//!   first. A type is `numeric`, `real`, `integer`, `string`, `date [FORMAT]` or a
+//!   nominal `{a, b, 'c d'}`. Text after a numeric, string or date type is ignored, as
+//!   Weka ignores it.
+//! - Dense rows, one value per attribute, `?` for missing (a quoted `'?'` is the value
+//!   `?`, as in Weka). Sparse rows `{INDEX VALUE, ...}` with 0-based indices in
+//!   increasing order; a value left out is 0: `0` for numeric attributes, the first
+//!   declared value for nominal ones (Weka stores a nominal value as its index),
+//!   1970-01-01T00:00:00 for dates in the default format, and for string attributes
+//!   the placeholder Weka's loader keeps at string index 0, [`WEKA_DUMMY_STRING`].
+//!
+//! Where this reader differs from Weka, it refuses rather than guesses: an unclosed
+//! quote (Weka ends it at the end of the line), NaN or infinite numbers, relational
+//! attributes, instance weights (`{w}` after a row), and a date left out of a sparse
+//! row whose format is not the default (dates are kept as text, not parsed). And it
+//! accepts values of nominal attributes that the header does
+//! not declare (real files have them): [`ArffTable::dataset`](super::ArffTable::dataset)
+//! and [`ArffTable::hand_frames`](super::ArffTable::hand_frames) say so in warnings.
+
+use super::{error, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable};
+
+/// What Weka reads for a string attribute that a sparse row leaves out: its loader puts
+/// this placeholder at index 0 of every string attribute's values (checked with Weka
+/// 3.6.14's `ArffLoader`).
+pub const WEKA_DUMMY_STRING: &str = "*WEKA*DUMMY*STRING*FOR*STRING*ATTRIBUTES*";
+
+/// Weka's default date format.
+const DEFAULT_DATE_FORMAT: &str = "yyyy-MM-dd'T'HH:mm:ss";
+
+/// What a token is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// Unquoted text.
+    Word,
+    /// Quoted text (quotes removed, escapes resolved).
+    Quoted,
+    /// `{`.
+    Open,
+    /// `}`.
+    Close,
+}
+
+#[derive(Debug, Clone)]
+struct Token {
+    kind: Kind,
+    text: String,
+    /// 1-based byte column of the token's first character.
+    column: usize,
+}
+
+impl Token {
+    /// Text that stands for a name or a value: a word or a quoted token.
+    fn is_text(&self) -> bool {
+        matches!(self.kind, Kind::Word | Kind::Quoted)
+    }
+
+    /// `?`, unquoted: a missing value.
+    fn is_missing(&self) -> bool {
+        self.kind == Kind::Word && self.text == "?"
+    }
+
+    /// The token as written, for messages.
+    fn shown(&self) -> String {
+        match self.kind {
+            Kind::Quoted => format!("'{}'", self.text),
+            _ => self.text.clone(),
+        }
+    }
+}
+
+/// A line that does not split into tokens: where, what, and how many tokens came first.
+struct TokenError {
+    column: usize,
+    message: String,
+    before: usize,
+}
+
+/// Separators: every character up to the space, and the comma (Weka's
+/// `whitespaceChars(0, ' ')` and `whitespaceChars(',', ',')`). A byte order mark, which
+/// Weka would read as part of the first word, is skipped too.
+fn is_separator(c: char) -> bool {
+    c <= ' ' || c == ',' || c == '\u{feff}'
+}
+
+/// Characters that end an unquoted word besides separators.
+fn ends_word(c: char) -> bool {
+    is_separator(c) || matches!(c, '%' | '{' | '}' | '\'' | '"')
+}
+
+/// Splits one line into tokens as Weka's tokenizer does.
+fn tokenize(line: &str) -> Result<Vec<Token>, TokenError> {
+    let mut tokens = Vec::new();
+    let mut chars = line.char_indices().peekable();
+    while let Some(&(at, c)) = chars.peek() {
+        let column = at + 1;
+        if is_separator(c) {
+            chars.next();
+            continue;
+        }
+        match c {
+            '%' => break,
+            '{' | '}' => {
+                chars.next();
+                let kind = if c == '{' { Kind::Open } else { Kind::Close };
+                tokens.push(Token {
+                    kind,
+                    text: c.to_string(),
+                    column,
+                });
+            }
+            '\'' | '"' => {
+                chars.next();
+                let mut text = String::new();
+                loop {
+                    match chars.next() {
+                        None => {
+                            return Err(TokenError {
+                                column,
+                                message: format!(
+                                    "the quoted value is not closed: a {c} quote ends on the line it starts"
+                                ),
+                                before: tokens.len(),
+                            })
+                        }
+                        Some((_, q)) if q == c => break,
+                        Some((_, '\\')) => match chars.next() {
+                            None => {
+                                return Err(TokenError {
+                                    column,
+                                    message: "the quoted value is not closed: the line ends after `\\`".into(),
+                                    before: tokens.len(),
+                                })
+                            }
+                            Some((_, d @ '0'..='7')) => {
+                                // Java's octal escape: up to three digits, the first of
+                                // three at most `3`.
+                                let mut code = d as u32 - '0' as u32;
+                                let mut digits = 1;
+                                while let Some(&(_, e @ '0'..='7')) = chars.peek() {
+                                    if digits == 2 && d > '3' || digits == 3 {
+                                        break;
+                                    }
+                                    code = code * 8 + (e as u32 - '0' as u32);
+                                    digits += 1;
+                                    chars.next();
+                                }
+                                text.push(char::from_u32(code).unwrap_or('\u{fffd}'));
+                            }
+                            Some((_, e)) => text.push(match e {
+                                'a' => '\u{7}',
+                                'b' => '\u{8}',
+                                'f' => '\u{c}',
+                                'n' => '\n',
+                                'r' => '\r',
+                                't' => '\t',
+                                'v' => '\u{b}',
+                                other => other,
+                            }),
+                        },
+                        Some((_, other)) => text.push(other),
+                    }
+                }
+                tokens.push(Token {
+                    kind: Kind::Quoted,
+                    text,
+                    column,
+                });
+            }
+            _ => {
+                let mut end = line.len();
+                while let Some(&(i, d)) = chars.peek() {
+                    if ends_word(d) {
+                        end = i;
+                        break;
+                    }
+                    chars.next();
+                }
+                tokens.push(Token {
+                    kind: Kind::Word,
+                    text: line[at..end].to_string(),
+                    column,
+                });
+            }
+        }
+    }
+    Ok(tokens)
+}
+
+/// Whether a text is ARFF by its content: its first line that is neither blank nor a `%`
+/// comment starts with `@relation`, in any case. Recognisers' tables often ship as
+/// `.txt`; a native recording starts with `{`.
+pub fn is_arff_text(text: &str) -> bool {
+    for line in text.lines() {
+        let rest = line.trim_start_matches(is_separator);
+        if rest.is_empty() || rest.starts_with('%') {
+            continue;
+        }
+        let end = rest.find(ends_word).unwrap_or(rest.len());
+        return rest[..end].eq_ignore_ascii_case("@relation");
+    }
+    false
+}
+
+/// Where the reader is in the file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Section {
+    /// Before `@relation`.
+    Start,
+    /// Between `@relation` and `@data`.
+    Header,
+    /// After `@data`.
+    Data,
+}
+
+/// Reads an ARFF file as Weka's `ArffLoader` does (see the module documentation for
+/// the grammar, the sparse rows' zeros, and where this reader refuses what Weka would
+/// guess). Errors name the line, the column, and the attribute (or the keyword).
+pub fn read_arff(text: &str) -> Result<ArffTable, ArffError> {
+    let mut relation = String::new();
+    let mut attributes: Vec<ArffAttribute> = Vec::new();
+    let mut rows: Vec<ArffRow> = Vec::new();
+    let mut section = Section::Start;
+    let mut last_line = 0;
+    for (i, raw) in text.lines().enumerate() {
+        let line = i + 1;
+        last_line = line;
+        let tokens = tokenize(raw).map_err(|e| {
+            let field = match section {
+                Section::Data => attributes
+                    .get(e.before.min(attributes.len().saturating_sub(1)))
+                    .map_or("@data", |a| a.name.as_str()),
+                _ => "@attribute",
+            };
+            error(line, e.column, field, e.message)
+        })?;
+        let Some(first) = tokens.first() else {
+            continue;
+        };
+        if section == Section::Data {
+            let row = if first.kind == Kind::Open {
+                sparse_row(line, &tokens, &attributes)?
+            } else {
+                dense_row(line, &tokens, &attributes)?
+            };
+            rows.push(row);
+            continue;
+        }
+        let keyword = first.text.to_ascii_lowercase();
+        if first.kind != Kind::Word || !keyword.starts_with('@') {
+            let expected = if section == Section::Start {
+                "@relation"
+            } else {
+                "@attribute or @data"
+            };
+            return Err(error(
+                line,
+                first.column,
+                &first.text,
+                format!("expected {expected}, found `{}`", first.shown()),
+            ));
+        }
+        match (section, keyword.as_str()) {
+            (Section::Start, "@relation") => {
+                relation = relation_name(line, &tokens)?;
+                section = Section::Header;
+            }
+            (Section::Start, _) => {
+                return Err(error(
+                    line,
+                    first.column,
+                    &first.text,
+                    format!(
+                        "an ARFF file starts with `@relation NAME`, found `{}`",
+                        first.text
+                    ),
+                ))
+            }
+            (_, "@attribute") => {
+                let attribute = attribute(line, &tokens)?;
+                if attributes.iter().any(|a| a.name == attribute.name) {
+                    return Err(error(
+                        line,
+                        tokens[1].column,
+                        &attribute.name,
+                        format!("attribute `{}` is declared twice", attribute.name),
+                    ));
+                }
+                attributes.push(attribute);
+            }
+            (_, "@data") => {
+                if attributes.is_empty() {
+                    return Err(error(
+                        line,
+                        first.column,
+                        "@data",
+                        "no @attribute before @data",
+                    ));
+                }
+                if let Some(extra) = tokens.get(1) {
+                    return Err(error(
+                        line,
+                        extra.column,
+                        "@data",
+                        format!(
+                            "expected the end of the line after @data, found `{}`",
+                            extra.shown()
+                        ),
+                    ));
+                }
+                section = Section::Data;
+            }
+            (_, "@relation") => {
+                return Err(error(
+                    line,
+                    first.column,
+                    "@relation",
+                    "a second @relation: a file holds one relation",
+                ))
+            }
+            _ => {
+                return Err(error(
+                    line,
+                    first.column,
+                    &first.text,
+                    format!("expected @attribute or @data, found `{}`", first.text),
+                ))
+            }
+        }
+    }
+    if section != Section::Data {
+        let what = if section == Section::Start {
+            "no @relation: an ARFF file starts with `@relation NAME`"
+        } else {
+            "no @data section"
+        };
+        let field = if section == Section::Start {
+            "@relation"
+        } else {
+            "@data"
+        };
+        return Err(error(last_line.max(1), 0, field, what));
+    }
+    Ok(ArffTable {
+        relation,
+        attributes,
+        rows,
+    })
+}
+
+/// `@relation NAME`, nothing after the name.
+fn relation_name(line: usize, tokens: &[Token]) -> Result<String, ArffError> {
+    let name = match tokens.get(1) {
+        Some(t) if t.is_text() => t.text.clone(),
+        Some(t) => {
+            return Err(error(
+                line,
+                t.column,
+                "@relation",
+                format!("expected the relation's name, found `{}`", t.text),
+            ))
+        }
+        None => {
+            return Err(error(
+                line,
+                tokens[0].column,
+                "@relation",
+                "the relation's name is missing",
+            ))
+        }
+    };
+    if let Some(extra) = tokens.get(2) {
+        return Err(error(
+            line,
+            extra.column,
+            "@relation",
+            format!(
+                "expected the end of the line after the relation's name, found `{}` (a name with spaces is quoted)",
+                extra.shown()
+            ),
+        ));
+    }
+    Ok(name)
+}
+
+/// `@attribute NAME TYPE`.
+fn attribute(line: usize, tokens: &[Token]) -> Result<ArffAttribute, ArffError> {
+    let name = match tokens.get(1) {
+        Some(t) if t.is_text() => t.text.clone(),
+        Some(t) => {
+            return Err(error(
+                line,
+                t.column,
+                "@attribute",
+                format!("expected the attribute's name, found `{}`", t.text),
+            ))
+        }
+        None => {
+            return Err(error(
+                line,
+                tokens[0].column,
+                "@attribute",
+                "the attribute's name is missing",
+            ))
+        }
+    };
+    let Some(spec) = tokens.get(2) else {
+        return Err(error(
+            line,
+            tokens[1].column,
+            &name,
+            format!("attribute `{name}` has no type (numeric, real, integer, string, date or {{values}})"),
+        ));
+    };
+    let kind = match spec.kind {
+        Kind::Open => nominal(line, &name, &tokens[2..])?,
+        Kind::Close => {
+            return Err(error(
+                line,
+                spec.column,
+                &name,
+                "a `}` without its `{`: a nominal type is `{a, b, c}`",
+            ))
+        }
+        Kind::Word | Kind::Quoted => match spec.text.to_ascii_lowercase().as_str() {
+            "numeric" | "real" | "integer" => ArffKind::Numeric,
+            "string" => ArffKind::String,
+            "date" => ArffKind::Date(match tokens.get(3) {
+                Some(f) if f.is_text() => f.text.clone(),
+                _ => DEFAULT_DATE_FORMAT.to_string(),
+            }),
+            "relational" => {
+                return Err(error(
+                    line,
+                    spec.column,
+                    &name,
+                    "relational attributes are not supported",
+                ))
+            }
+            _ => {
+                return Err(error(
+                    line,
+                    spec.column,
+                    &name,
+                    format!(
+                        "unknown type `{}` (numeric, real, integer, string, date or {{values}})",
+                        spec.text
+                    ),
+                ))
+            }
+        },
+    };
+    Ok(ArffAttribute { name, kind, line })
+}
+
+/// `{a, b, 'c d'}`: `tokens` starts at the `{`.
+fn nominal(line: usize, name: &str, tokens: &[Token]) -> Result<ArffKind, ArffError> {
+    let mut values: Vec<String> = Vec::new();
+    for (k, t) in tokens.iter().enumerate().skip(1) {
+        match t.kind {
+            Kind::Close => {
+                if let Some(extra) = tokens.get(k + 1) {
+                    return Err(error(
+                        line,
+                        extra.column,
+                        name,
+                        format!(
+                            "expected the end of the line after the nominal type's `}}`, found `{}`",
+                            extra.shown()
+                        ),
+                    ));
+                }
+                return Ok(ArffKind::Nominal(values));
+            }
+            Kind::Open => {
+                return Err(error(
+                    line,
+                    t.column,
+                    name,
+                    "a `{` inside a nominal type (quote a value that has one)",
+                ))
+            }
+            Kind::Word | Kind::Quoted => {
+                if values.contains(&t.text) {
+                    return Err(error(
+                        line,
+                        t.column,
+                        name,
+                        format!("value `{}` is declared twice", t.text),
+                    ));
+                }
+                values.push(t.text.clone());
+            }
+        }
+    }
+    Err(error(
+        line,
+        tokens[0].column,
+        name,
+        "a nominal type ends with `}` on the line it starts",
+    ))
+}
+
+/// A value of attribute `a` as written (`None` for `?`), checked for its type.
+fn value(line: usize, t: &Token, a: &ArffAttribute) -> Result<Option<String>, ArffError> {
+    if !t.is_text() {
+        return Err(error(
+            line,
+            t.column,
+            &a.name,
+            format!(
+                "expected a value of `{}`, found `{}` (a sparse row starts with `{{`)",
+                a.name, t.text
+            ),
+        ));
+    }
+    if t.is_missing() {
+        return Ok(None);
+    }
+    if a.kind == ArffKind::Numeric && t.text.parse::<f64>().map_or(true, |x| !x.is_finite()) {
+        return Err(error(
+            line,
+            t.column,
+            &a.name,
+            format!("`{}` is not a number", t.text),
+        ));
+    }
+    Ok(Some(t.text.clone()))
+}
+
+/// A dense row: one value per attribute.
+fn dense_row(
+    line: usize,
+    tokens: &[Token],
+    attributes: &[ArffAttribute],
+) -> Result<ArffRow, ArffError> {
+    let n = attributes.len();
+    // A brace says more about the row than its count of values.
+    if let Some((k, t)) = tokens.iter().enumerate().find(|(_, t)| !t.is_text()) {
+        value(line, t, &attributes[k.min(n - 1)])?;
+    }
+    if tokens.len() != n {
+        let (column, field) = if tokens.len() < n {
+            (tokens[0].column, attributes[tokens.len()].name.as_str())
+        } else {
+            (tokens[n].column, attributes[n - 1].name.as_str())
+        };
+        return Err(error(
+            line,
+            column,
+            field,
+            format!(
+                "{} values, but the header declares {n} attributes",
+                tokens.len()
+            ),
+        ));
+    }
+    let values = tokens
+        .iter()
+        .zip(attributes)
+        .map(|(t, a)| value(line, t, a))
+        .collect::<Result<_, _>>()?;
+    Ok(ArffRow { line, values })
+}
+
+/// A sparse row `{INDEX VALUE, ...}`; values left out are Weka's 0.
+fn sparse_row(
+    line: usize,
+    tokens: &[Token],
+    attributes: &[ArffAttribute],
+) -> Result<ArffRow, ArffError> {
+    let n = attributes.len();
+    let open = tokens[0].column;
+    let mut given: Vec<Option<Option<String>>> = vec![None; n];
+    let mut last: Option<usize> = None;
+    let mut k = 1;
+    loop {
+        let Some(t) = tokens.get(k) else {
+            return Err(error(
+                line,
+                open,
+                "@data",
+                "a sparse row ends with `}` on the line it starts",
+            ));
+        };
+        if t.kind == Kind::Close {
+            k += 1;
+            break;
+        }
+        let index = match (t.kind, t.text.parse::<usize>()) {
+            (Kind::Word, Ok(i)) => i,
+            _ => {
+                return Err(error(
+                    line,
+                    t.column,
+                    "@data",
+                    format!(
+                        "expected an attribute index (0-based) in a sparse row, found `{}`",
+                        t.shown()
+                    ),
+                ))
+            }
+        };
+        if index >= n {
+            return Err(error(
+                line,
+                t.column,
+                "@data",
+                format!(
+                    "index {index} is out of range: the header declares {n} attributes, indices 0 to {}",
+                    n - 1
+                ),
+            ));
+        }
+        let a = &attributes[index];
+        if let Some(previous) = last.filter(|&p| p >= index) {
+            return Err(error(
+                line,
+                t.column,
+                &a.name,
+                format!(
+                    "index {index} after index {previous}: a sparse row lists its indices in increasing order"
+                ),
+            ));
+        }
+        last = Some(index);
+        let v = match tokens.get(k + 1) {
+            Some(v) if v.is_text() => value(line, v, a)?,
+            _ => {
+                return Err(error(
+                    line,
+                    t.column,
+                    &a.name,
+                    format!("index {index} (`{}`) has no value", a.name),
+                ))
+            }
+        };
+        given[index] = Some(v);
+        k += 2;
+    }
+    if let Some(extra) = tokens.get(k) {
+        return Err(error(
+            line,
+            extra.column,
+            "@data",
+            format!(
+                "expected the end of the line after the sparse row's `}}`, found `{}` (instance weights are not supported)",
+                extra.shown()
+            ),
+        ));
+    }
+    let mut values = Vec::with_capacity(n);
+    for (v, a) in given.into_iter().zip(attributes) {
+        values.push(match v {
+            Some(v) => v,
+            None => Some(match &a.kind {
+                ArffKind::Numeric => "0".to_string(),
+                ArffKind::Nominal(declared) => match declared.first() {
+                    Some(first) => first.clone(),
+                    None => {
+                        return Err(error(
+                            line,
+                            open,
+                            &a.name,
+                            format!(
+                                "the sparse row leaves out `{}`, which reads as its first value, but the header declares none",
+                                a.name
+                            ),
+                        ))
+                    }
+                },
+                ArffKind::Date(format) if format == DEFAULT_DATE_FORMAT => {
+                    "1970-01-01T00:00:00".to_string()
+                }
+                ArffKind::Date(format) => {
+                    return Err(error(
+                        line,
+                        open,
+                        &a.name,
+                        format!(
+                            "the sparse row leaves out date `{}` (Weka reads 1970-01-01 00:00:00 UTC), which is not written in its format `{format}` here: write the value",
+                            a.name
+                        ),
+                    ))
+                }
+                ArffKind::String => WEKA_DUMMY_STRING.to_string(),
+            }),
+        });
+    }
+    Ok(ArffRow { line, values })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(line: &str) -> Vec<(Kind, String)> {
+        match tokenize(line) {
+            Ok(t) => t.into_iter().map(|t| (t.kind, t.text)).collect(),
+            Err(e) => panic!("{}: {}", e.column, e.message),
+        }
+    }
+
+    #[test]
+    fn separators_are_commas_and_whitespace_in_any_mix() {
+        let w = |s: &str| s.to_string();
+        assert_eq!(
+            words("a,\tb  ,, c\t\td % e, f"),
+            [
+                (Kind::Word, w("a")),
+                (Kind::Word, w("b")),
+                (Kind::Word, w("c")),
+                (Kind::Word, w("d"))
+            ]
+        );
+        assert_eq!(
+            words(r#"'it''s' "a\tb" 'q\'' '\101\0' x{y}"#),
+            [
+                (Kind::Quoted, w("it")),
+                (Kind::Quoted, w("s")),
+                (Kind::Quoted, w("a\tb")),
+                (Kind::Quoted, w("q'")),
+                (Kind::Quoted, w("A\0")),
+                (Kind::Word, w("x")),
+                (Kind::Open, w("{")),
+                (Kind::Word, w("y")),
+                (Kind::Close, w("}")),
+            ]
+        );
+        // Octal: three digits only when the first is at most 3 (Java's rule).
+        assert_eq!(words(r"'\477'"), [(Kind::Quoted, w("'7"))]);
+    }
+
+    #[test]
+    fn content_says_arff() {
+        assert!(is_arff_text("% a comment\n\n  @RELATION x\n"));
+        assert!(is_arff_text("\u{feff}@relation 'a b'\n"));
+        assert!(!is_arff_text("{\"format\":\"demoplan-recording\"}\n"));
+        assert!(!is_arff_text("% only comments\n"));
+        assert!(!is_arff_text("@relationship x\n"));
+    }
+}

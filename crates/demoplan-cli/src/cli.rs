@@ -133,9 +133,33 @@ pub enum Command {
     ///
     /// A malformed recording is reported with its file, line, column and field (exit 31).
     Inspect {
-        /// Recordings in demoplan's JSON Lines format.
+        /// Recordings in demoplan's JSON Lines format, or Unity playback logs.
         #[arg(value_name = "RECORDING", required = true)]
         files: Vec<PathBuf>,
+        /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
+        /// the format's defaults.
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
+    },
+    /// Import real recordings (Unity VR playback logs) as native recordings DIR/STEM.jsonl.
+    ///
+    /// Each source is read twice, streaming (names and start poses, then frames), and its
+    /// recording written atomically. Prints per file the duration and measured rate, the
+    /// entities mapped and ignored, the grasps found and the gaps, then the mapping used
+    /// as TOML ready to edit. Two sources with one output name: exit 36, nothing written.
+    Import {
+        /// Unity playback logs (JSON), told by their content.
+        #[arg(value_name = "SOURCE", required = true)]
+        sources: Vec<PathBuf>,
+        /// The mapping file (TOML, docs/import.md); keys left out keep the defaults.
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
+        /// The folder to write the recordings into.
+        #[arg(short = 'o', long = "out", value_name = "DIR")]
+        out: PathBuf,
+        /// Print the peak heap (bytes, counted by the allocator) on standard error.
+        #[arg(long, hide = true)]
+        peak_heap: bool,
     },
     /// Ground recordings, cut each hand's frames into segments and classify them as
     /// Reach, Take, Put, Stack or Idle (the paper's Tables 2 and 1).
@@ -157,6 +181,10 @@ pub enum Command {
         /// The activity tree as JSON (`classify --learn ... -o TREE`); default: Table 1.
         #[arg(long, value_name = "FILE")]
         tree: Option<PathBuf>,
+        /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
+        /// the format's defaults.
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
     },
     /// Print, learn or check the decision tree that classifies activities.
     ///
@@ -201,6 +229,10 @@ pub enum Command {
         /// The SVG file to write.
         #[arg(short = 'o', long = "out", value_name = "FILE.svg")]
         out: PathBuf,
+        /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
+        /// the format's defaults.
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
         /// Grounding thresholds as TOML.
         #[arg(long, value_name = "FILE")]
         config: Option<PathBuf>,
@@ -218,11 +250,15 @@ pub enum Command {
     /// atomically and durably; learners writing one library take turns through its lock
     /// file (FILE.lock), so none loses another's counts.
     Learn {
-        /// Recordings (JSON Lines), ARFF hand-state tables, or folders: every recording
-        /// in a folder, sorted by name, without the simulator's `*.truth.jsonl` and
-        /// `simulation.json`.
+        /// Recordings (JSON Lines), Unity playback logs, ARFF hand-state tables, or
+        /// folders: every recording in a folder (native, Unity or ARFF, by content),
+        /// sorted by name, without the simulator's `*.truth.jsonl` and `simulation.json`.
         #[arg(value_name = "RECORDING", required = true)]
         files: Vec<PathBuf>,
+        /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
+        /// the format's defaults.
+        #[arg(long, value_name = "FILE")]
+        mapping: Option<PathBuf>,
         /// A library to add to (it may also be the output file).
         #[arg(long, value_name = "FILE")]
         library: Option<PathBuf>,

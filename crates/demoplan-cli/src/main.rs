@@ -113,18 +113,36 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             params,
             cubes,
         }),
-        cli::Command::Inspect { files } => commands::inspect::run(&files),
+        cli::Command::Inspect { files, mapping } => {
+            recording_input::use_mapping(mapping);
+            commands::inspect::run(&files)
+        }
+        cli::Command::Import {
+            sources,
+            mapping,
+            out,
+            peak_heap,
+        } => commands::import::run(commands::import::ImportArgs {
+            sources,
+            mapping,
+            out,
+            peak_heap,
+        }),
         cli::Command::Segment {
             files,
             json,
             config,
             tree,
-        } => commands::segment::run(commands::segment::SegmentArgs {
-            files,
-            json,
-            config,
-            tree,
-        }),
+            mapping,
+        } => {
+            recording_input::use_mapping(mapping);
+            commands::segment::run(commands::segment::SegmentArgs {
+                files,
+                json,
+                config,
+                tree,
+            })
+        }
         cli::Command::Classify {
             files,
             learn,
@@ -145,16 +163,21 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
         cli::Command::Timeline {
             file,
             out,
+            mapping,
             config,
             tree,
-        } => commands::timeline::run(commands::timeline::TimelineArgs {
-            file,
-            out,
-            config,
-            tree,
-        }),
+        } => {
+            recording_input::use_mapping(mapping);
+            commands::timeline::run(commands::timeline::TimelineArgs {
+                file,
+                out,
+                config,
+                tree,
+            })
+        }
         cli::Command::Learn {
             files,
+            mapping,
             library,
             out,
             lambda,
@@ -162,20 +185,23 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
             config,
             tree,
             lock_timeout,
-        } => commands::plan::parse_time_limit(&lock_timeout)
-            .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))
-            .and_then(|lock_timeout| {
-                commands::library::learn(commands::library::LearnArgs {
-                    files,
-                    library,
-                    out,
-                    lambda,
-                    grouping: activities.map(cli::ActivitiesArg::grouping),
-                    config,
-                    tree,
-                    lock_timeout,
+        } => {
+            recording_input::use_mapping(mapping);
+            commands::plan::parse_time_limit(&lock_timeout)
+                .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))
+                .and_then(|lock_timeout| {
+                    commands::library::learn(commands::library::LearnArgs {
+                        files,
+                        library,
+                        out,
+                        lambda,
+                        grouping: activities.map(cli::ActivitiesArg::grouping),
+                        config,
+                        tree,
+                        lock_timeout,
+                    })
                 })
-            }),
+        }
         cli::Command::Operators { library, markdown } => {
             commands::library::operators(commands::library::OperatorsArgs { library, markdown })
         }

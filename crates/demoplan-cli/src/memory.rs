@@ -10,6 +10,13 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 static IN_USE: AtomicU64 = AtomicU64::new(0);
+static PEAK: AtomicU64 = AtomicU64::new(0);
+
+/// Counts `size` more bytes in use and raises the peak.
+fn grow(size: usize) {
+    let now = IN_USE.fetch_add(size as u64, Ordering::Relaxed) + size as u64;
+    PEAK.fetch_max(now, Ordering::Relaxed);
+}
 
 /// The system allocator, counting bytes in use.
 #[derive(Debug)]
@@ -22,7 +29,7 @@ unsafe impl GlobalAlloc for CountingAllocator {
         // SAFETY: forwarded unchanged.
         let p = unsafe { System.alloc(layout) };
         if !p.is_null() {
-            IN_USE.fetch_add(layout.size() as u64, Ordering::Relaxed);
+            grow(layout.size());
         }
         p
     }
@@ -31,7 +38,7 @@ unsafe impl GlobalAlloc for CountingAllocator {
         // SAFETY: forwarded unchanged.
         let p = unsafe { System.alloc_zeroed(layout) };
         if !p.is_null() {
-            IN_USE.fetch_add(layout.size() as u64, Ordering::Relaxed);
+            grow(layout.size());
         }
         p
     }
@@ -47,10 +54,15 @@ unsafe impl GlobalAlloc for CountingAllocator {
         let p = unsafe { System.realloc(ptr, layout, new_size) };
         if !p.is_null() {
             IN_USE.fetch_sub(layout.size() as u64, Ordering::Relaxed);
-            IN_USE.fetch_add(new_size as u64, Ordering::Relaxed);
+            grow(new_size);
         }
         p
     }
+}
+
+/// The most bytes allocated on the heap at any time so far.
+pub fn peak_heap() -> u64 {
+    PEAK.load(Ordering::Relaxed)
 }
 
 /// Bytes currently allocated on the heap.

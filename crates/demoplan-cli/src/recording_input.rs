@@ -4,8 +4,9 @@
 
 use std::fmt;
 use std::fs::File;
-use std::io::{BufRead, BufReader};
-use std::path::Path;
+use std::io::{BufRead, BufReader, Read};
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
 
 use miette::{Diagnostic, LabeledSpan, MietteError, SourceCode, SourceSpan, SpanContents};
 
@@ -15,17 +16,122 @@ use crate::exit::ExitCode;
 /// Read buffer for recordings: large, so that reading is not a system call per frame.
 const BUFFER: usize = 1 << 20;
 
-/// Opens a recording and reads its header. A missing file is a command line error (36);
-/// a malformed header an input error (31).
-pub fn open(path: &Path) -> Result<recording::Reader<BufReader<File>>, Failure> {
+/// The mapping file given with `--mapping`, for every source opened by [`open`]. Set
+/// once by `main` before a command runs, so the commands that read recordings take
+/// Unity logs without each passing the mapping down.
+static MAPPING: OnceLock<PathBuf> = OnceLock::new();
+
+/// Uses the mapping file at `path` (if any) for sources opened from now on.
+pub fn use_mapping(path: Option<PathBuf>) {
+    if let Some(p) = path {
+        let _ = MAPPING.set(p);
+    }
+}
+
+/// What a file on the command line holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SourceKind {
+    /// A native recording (JSON Lines).
+    Native,
+    /// A Unity VR playback log.
+    Unity,
+}
+
+/// Tells a Unity log from a native recording by its content (a recording's header names
+/// its format on the first line). A missing file is a command line error (36).
+pub fn source_kind(path: &Path) -> Result<SourceKind, Failure> {
+    let mut start = Vec::with_capacity(4096);
+    File::open(path)
+        .and_then(|f| f.take(4096).read_to_end(&mut start))
+        .map_err(|e| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!("cannot read {}: {e}", path.display()),
+            )
+        })?;
+    let native = String::from_utf8_lossy(&start).contains(recording::FORMAT_NAME);
+    Ok(if !native && import::unity::looks_like_unity_log(&start) {
+        SourceKind::Unity
+    } else {
+        SourceKind::Native
+    })
+}
+
+/// The mapping for a source of `format`: the `--mapping` file over the format's
+/// defaults, or the defaults alone. A malformed file is an input error (31) naming its
+/// line and key.
+pub fn mapping(path: Option<&Path>, format: import::Format) -> Result<import::Mapping, Failure> {
+    let Some(path) = path.or(MAPPING.get().map(PathBuf::as_path)) else {
+        return Ok(import::Mapping::default_for(format));
+    };
+    let text = crate::input::read_text(path)?;
+    import::Mapping::from_toml(&text, format).map_err(|e| {
+        let message = if e.key.is_empty() {
+            e.message.clone()
+        } else {
+            format!("key `{}`: {}", e.key, e.message)
+        };
+        crate::commands::demo_input::text_failure(
+            path,
+            &text,
+            "import::mapping",
+            e.line,
+            e.column,
+            &e.key,
+            &message,
+        )
+    })
+}
+
+/// A Unity log as an import source: each pass reopens the file.
+pub fn unity_source(
+    path: &Path,
+) -> import::unity::UnityLog<impl FnMut() -> std::io::Result<File> + '_> {
+    import::unity::UnityLog::new(move || File::open(path))
+}
+
+/// The failure for an import error of the source at `path`: an input error (31) naming
+/// the file, the place in it, the entity and the field.
+pub fn import_failure(path: &Path, error: &import::ImportError) -> Failure {
+    match error {
+        import::ImportError::Input(e) => {
+            Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", path.display()))
+        }
+        import::ImportError::Io(e) => Failure::plain(
+            ExitCode::USAGE,
+            format!("cannot read {}: {e}", path.display()),
+        ),
+        import::ImportError::Write(e) => Failure::plain(
+            ExitCode::CRITICAL_ERROR,
+            format!("cannot write the recording of {}: {e}", path.display()),
+        ),
+    }
+}
+
+/// Opens a recording and reads its header. A Unity log (told by its content) is imported
+/// into memory first, with the `--mapping` file or the defaults. A missing file is a
+/// command line error (36); a malformed header or source an input error (31).
+pub fn open(path: &Path) -> Result<recording::Reader<Box<dyn BufRead>>, Failure> {
+    if source_kind(path)? == SourceKind::Unity {
+        let mapping = mapping(None, import::Format::Unity)?;
+        let id = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "imported".to_string());
+        let mut source = unity_source(path);
+        let (bytes, _, _) = import::import(&mut source, &mapping, &id, Vec::new())
+            .map_err(|e| import_failure(path, &e))?;
+        let input: Box<dyn BufRead> = Box::new(std::io::Cursor::new(bytes));
+        return recording::Reader::new(input).map_err(|e| recording_failure(path, &e));
+    }
     let file = File::open(path).map_err(|e| {
         Failure::plain(
             ExitCode::USAGE,
             format!("cannot read {}: {e}", path.display()),
         )
     })?;
-    recording::Reader::new(BufReader::with_capacity(BUFFER, file))
-        .map_err(|e| recording_failure(path, &e))
+    let input: Box<dyn BufRead> = Box::new(BufReader::with_capacity(BUFFER, file));
+    recording::Reader::new(input).map_err(|e| recording_failure(path, &e))
 }
 
 /// The failure for an error reading the recording at `path`.

@@ -272,7 +272,7 @@ pub fn warn(path: &Path, warnings: &[segment::ArffWarning]) {
 }
 
 /// What `learn` reads from its arguments: recordings and ARFF tables as given, and every
-/// recording in a folder (native `.jsonl` and ARFF by content), sorted by name. The
+/// recording in a folder (native `.jsonl`, Unity logs and ARFF by content), sorted by name. The
 /// simulator's ground truth (`*.truth.jsonl`) and its `simulation.json` are skipped,
 /// also when given by name (a glob such as `demos/*.jsonl` names the truth files), and
 /// what was skipped is said on standard error. No recording at all is a command line
@@ -321,7 +321,12 @@ pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
             let name = name_of(&file);
             if simulator_file(&name) {
                 truth += 1;
-            } else if name.ends_with(".jsonl") || is_arff(&file) {
+            } else if name.ends_with(".jsonl")
+                || is_arff(&file)
+                || (name.ends_with(".json")
+                    && crate::recording_input::source_kind(&file)?
+                        == crate::recording_input::SourceKind::Unity)
+            {
                 found += 1;
                 out.push(file);
             } else {
@@ -332,7 +337,7 @@ pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
             return Err(Failure::plain(
                 ExitCode::USAGE,
                 format!(
-                    "{} holds no recording (native .jsonl, or an ARFF table)",
+                    "{} holds no recording (native .jsonl, a Unity log, or an ARFF table)",
                     path.display()
                 ),
             ));

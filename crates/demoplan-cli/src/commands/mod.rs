@@ -5,6 +5,7 @@ pub mod classify;
 pub mod demo_input;
 pub mod execute;
 pub mod fmt;
+pub mod import;
 pub mod inspect;
 pub mod library;
 pub mod plan;

@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use clap::{Parser, Subcommand, ValueEnum};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 
 /// demoplan: planning domains from human demonstrations, and a fast optimal planner.
 #[derive(Debug, Parser)]
@@ -214,8 +214,8 @@ pub enum Command {
         /// Grounding thresholds as TOML, for recordings.
         #[arg(long, value_name = "FILE")]
         config: Option<PathBuf>,
-        /// A TOML file whose `[labels]` table maps ARFF labels to activities
-        /// (`PourSomething = "Put"`), over the defaults (docs/grounding.md).
+        /// The mapping file (TOML, docs/import.md) whose `[labels]` table maps ARFF
+        /// labels to activities (`PourSomething = "Put"`), over the defaults.
         #[arg(long, value_name = "FILE")]
         mapping: Option<PathBuf>,
     },
@@ -397,50 +397,19 @@ pub enum Command {
     },
     /// Reproduce the paper's experiment: simulate the 12 demonstrations, learn the
     /// library, build every priority domain, plan the five goals on each with
-    /// astar(lmcut()) and astar(ipdb()), check every plan by execution, and write tables,
-    /// CSV and JSON results, figures and report.html into the output folder.
+    /// astar(lmcut()) and astar(ipdb()) (and Algorithm 1 beside them), check every plan by
+    /// execution, and write tables (search time and total time), CSV and JSON results,
+    /// figures and report.html into the output folder.
     ///
     /// A run that hits the time limit is shown as "> limit" and ratios involving it are
-    /// lower bounds. The paper's goals 1 to 5 are reconstructed as towers of 2 to 6 cubes.
-    Reproduce {
-        /// The output folder (created if missing).
-        #[arg(
-            short = 'o',
-            long = "out",
-            value_name = "DIR",
-            default_value = "reproduction"
-        )]
-        out: PathBuf,
-        /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
-        #[arg(long, value_name = "TIME", default_value = "60")]
-        time_limit: String,
-        /// Runs per cell; tables show medians.
-        #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=100))]
-        repeat: u64,
-        /// The goals to plan, e.g. `1,2,3`.
-        #[arg(
-            long,
-            value_name = "LIST",
-            default_value = "1,2,3,4,5",
-            value_delimiter = ','
-        )]
-        goals: Vec<usize>,
-        /// Only these priority levels, e.g. `1,2` (default: every level).
-        #[arg(long, value_name = "LIST", value_delimiter = ',')]
-        prios: Option<Vec<usize>>,
-        /// Run the same grid with Fast Downward beside demoplan.
-        #[arg(long)]
-        with_fd: bool,
-        /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
-        #[arg(long, value_name = "PATH", requires = "with_fd")]
-        fd: Option<PathBuf>,
-        /// Seed of the simulated demonstrations.
-        #[arg(long, value_name = "N", default_value_t = 7)]
-        seed: u64,
-        /// Hands in the problems' scene: 1 (a one-armed robot, as the paper's TIAGo) or 2.
-        #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=2))]
-        hands: u64,
-    },
+    /// bounds. The paper's goals 1 to 5 are reconstructed as towers of 2 to 6 cubes.
+    Reproduce(ReproduceArgs),
+    /// When does slimming pay off? Plan priority 1, the full domain and Algorithm 1 over
+    /// seeds and conditions (hands, tower heights, several towers, distractor cubes,
+    /// grouping, operators without effects), execute every plan, and write runs.csv,
+    /// ratios.csv, scaling.svg/.png and report.html (docs/study.md). Resumes: runs
+    /// already in the folder's results.jsonl are skipped.
+    Study(StudyArgs),
     /// Execute a plan in the cube world and check it step by step.
     ///
     /// A table, 5 cm cubes and grippers laid out from the problem's initial state; each
@@ -481,4 +450,94 @@ impl ActivitiesArg {
             ActivitiesArg::Runs => learn::Grouping::Runs,
         }
     }
+}
+
+/// The options of `reproduce`.
+#[derive(Debug, Args)]
+pub struct ReproduceArgs {
+    /// The output folder (created if missing).
+    #[arg(
+        short = 'o',
+        long = "out",
+        value_name = "DIR",
+        default_value = "reproduction"
+    )]
+    pub out: PathBuf,
+    /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
+    #[arg(long, value_name = "TIME", default_value = "60")]
+    pub time_limit: String,
+    /// Runs per cell; tables show medians.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
+    pub repeat: u32,
+    /// The goals to plan, e.g. `1,2,3`.
+    #[arg(
+        long,
+        value_name = "LIST",
+        default_value = "1,2,3,4,5",
+        value_delimiter = ','
+    )]
+    pub goals: Vec<usize>,
+    /// Only these priority levels, e.g. `1,2` (default: every level).
+    #[arg(long, value_name = "LIST", value_delimiter = ',')]
+    pub prios: Option<Vec<usize>>,
+    /// Run the same grid with Fast Downward beside demoplan.
+    #[arg(long)]
+    pub with_fd: bool,
+    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
+    #[arg(long, value_name = "PATH", requires = "with_fd")]
+    pub fd: Option<PathBuf>,
+    /// Seed of the simulated demonstrations.
+    #[arg(long, value_name = "N", default_value_t = 7)]
+    pub seed: u64,
+    /// Hands in the problems' scene: 1 (a one-armed robot, as the paper's TIAGo) or 2.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=2))]
+    pub hands: u64,
+}
+
+/// The options of `study`.
+#[derive(Debug, Args)]
+pub struct StudyArgs {
+    /// Seeds of the simulated studies: `1-20` (inclusive), `3`, or `1,4,9`.
+    #[arg(long, value_name = "RANGE", default_value = "1-20")]
+    pub seeds: String,
+    /// Simulated participants per study.
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub participants: u32,
+    /// Demonstrations per participant.
+    #[arg(long, value_name = "N", default_value_t = 4)]
+    pub per_participant: u32,
+    /// Hands in the problems' scene, e.g. `1,2`.
+    #[arg(long, value_name = "LIST", default_value = "1,2")]
+    pub hands: String,
+    /// Cubes on the table beyond the towers', e.g. `0,2`.
+    #[arg(long, value_name = "LIST", default_value = "0")]
+    pub distractors: String,
+    /// Tower heights in cubes: `2-8` or a list.
+    #[arg(long, value_name = "RANGE", default_value = "2-8")]
+    pub heights: String,
+    /// Towers per goal, built from distinct cubes, e.g. `1,2`.
+    #[arg(long, value_name = "LIST", default_value = "1")]
+    pub towers: String,
+    /// How segments become activities: `settled`, `runs`, or both (`settled,runs`).
+    #[arg(long, value_name = "LIST", default_value = "settled")]
+    pub activities: String,
+    /// Also run every condition with operators that change nothing kept in the domains
+    /// (they are dropped by default).
+    #[arg(long)]
+    pub keep_without_effects: bool,
+    /// The simulator's parameters (JSON, as `demoplan simulate --params`).
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+    /// Time limit per run, with Fast Downward's units (`20`, `20s`, `1m`).
+    #[arg(long, value_name = "TIME", default_value = "20")]
+    pub time_limit: String,
+    /// Run every cell with Fast Downward too.
+    #[arg(long)]
+    pub with_fd: bool,
+    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
+    #[arg(long, value_name = "PATH", requires = "with_fd")]
+    pub fd: Option<PathBuf>,
+    /// The output folder (created if missing; a folder with results resumes).
+    #[arg(short = 'o', long = "out", value_name = "DIR", default_value = "study")]
+    pub out: PathBuf,
 }

@@ -26,6 +26,15 @@ impl Failure {
         }
     }
 
+    /// The reader of standard output closed it early (`| head`): exit 141 and print
+    /// nothing, as a program killed by SIGPIPE does.
+    pub fn output_closed() -> Failure {
+        Failure {
+            code: ExitCode::OUTPUT_CLOSED,
+            text: String::new(),
+        }
+    }
+
     /// An error in a PDDL file, rendered with the source line and an underline.
     pub fn pddl(path: &Path, source: &str, error: &pddl::PddlError) -> Failure {
         let (code, exit) = match error.kind {

@@ -8,6 +8,7 @@ mod exit;
 mod input;
 mod memory;
 mod output;
+mod progress;
 mod recording_input;
 
 use std::io::Write;
@@ -245,32 +246,8 @@ fn run(cli: cli::Cli) -> Result<ExitCode, Failure> {
                 keep_without_effects,
             })
         }
-        cli::Command::Reproduce {
-            out,
-            time_limit,
-            repeat,
-            goals,
-            prios,
-            with_fd,
-            fd,
-            seed,
-            hands,
-        } => {
-            // `infinity`: no limit worth the name.
-            let time_limit = time_limit_option(&time_limit)?
-                .unwrap_or(std::time::Duration::from_secs(u64::from(u32::MAX)));
-            commands::reproduce::run(commands::reproduce::ReproduceArgs {
-                out,
-                time_limit,
-                repeat: repeat as usize,
-                goals,
-                prios,
-                with_fd,
-                fd,
-                seed,
-                hands: hands as usize,
-            })
-        }
+        cli::Command::Reproduce(args) => commands::reproduce::run(args),
+        cli::Command::Study(args) => commands::study::run(args),
         cli::Command::Problem {
             tower,
             paper_goal,

@@ -60,9 +60,24 @@ unsafe impl GlobalAlloc for CountingAllocator {
     }
 }
 
-/// The most bytes allocated on the heap at any time so far.
+/// The most bytes allocated on the heap at any time since the start, or since the last
+/// [`reset_peak`].
 pub fn peak_heap() -> u64 {
     PEAK.load(Ordering::Relaxed)
+}
+
+/// Starts a new peak heap at what is in use now (each run of `reproduce` and `study`
+/// reports its own peak).
+pub fn reset_peak() {
+    PEAK.store(heap_in_use(), Ordering::Relaxed);
+}
+
+/// The probe that lets the experiment measure each run's peak heap.
+pub fn probe() -> slim::MemoryProbe {
+    slim::MemoryProbe {
+        reset: reset_peak,
+        peak: peak_heap,
+    }
 }
 
 /// Bytes currently allocated on the heap.

@@ -19,6 +19,27 @@ use std::time::{Duration, Instant};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 
+/// Writes `text` to standard output (or the writer standing for it). A reader that
+/// stopped early (`| head`) is no error: exit 141, quietly, as a shell shows for SIGPIPE
+/// (`Failure::output_closed`); any other failure to write is an I/O error (35) with its
+/// message.
+pub fn print(out: &mut impl Write, text: &str) -> Result<(), Failure> {
+    out.write_all(text.as_bytes())
+        .map_err(|e| stdout_failure(&e))
+}
+
+/// The failure for an error writing standard output: see [`print`].
+pub fn stdout_failure(e: &std::io::Error) -> Failure {
+    if e.kind() == std::io::ErrorKind::BrokenPipe {
+        Failure::output_closed()
+    } else {
+        Failure::plain(
+            ExitCode::CRITICAL_ERROR,
+            format!("cannot write to standard output: {e}"),
+        )
+    }
+}
+
 /// Writes through a temporary file in the same folder and a rename, so that a killed
 /// process never leaves a half-written file.
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {

@@ -1771,24 +1771,52 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
             pddl::check_problem(&domain, &problem).unwrap();
         }
     }
-    // Tables, CSV and JSON: one row per planner x domain x goal.
+    // Tables by both measures, the time split and both ratios.
     let tables = read("tables.md");
-    assert!(
-        tables.contains("## Table 4: A* with LM-cut (demoplan)"),
-        "{tables}"
-    );
+    for heading in [
+        "## Table 4: A* with LM-cut (demoplan), search time",
+        "## Table 4: A* with LM-cut (demoplan), total time",
+        "## Table 3: A* with iPDB (demoplan), total time",
+        "## Time by phase, goal 3",
+        "| ratio_p1 search | ratio_p1 total | ratio_alg1 search | ratio_alg1 total |",
+    ] {
+        assert!(tables.contains(heading), "{heading}\n{tables}");
+    }
+    // CSV and JSON: one row per planner x domain x goal, and Algorithm 1 per planner x
+    // goal; every row has the four times.
     let csv = read("results.csv");
-    assert_eq!(csv.lines().count(), 1 + 2 * 2 * 3, "{csv}");
+    assert_eq!(csv.lines().count(), 1 + 2 * 2 * 3 + 2 * 3, "{csv}");
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    for column in [
+        "translate_s",
+        "heuristic_s",
+        "search_s",
+        "total_s",
+        "peak_memory_kb",
+    ] {
+        assert!(header.contains(&column), "{column}");
+    }
     let json: serde_json::Value = serde_json::from_str(&read("results.json")).unwrap();
     assert_eq!(json["format"], "demoplan-reproduce");
     let runs = json["runs"].as_array().unwrap();
-    assert_eq!(runs.len(), 12);
-    // Every plan found executes in the cube world and is written.
+    assert_eq!(runs.len(), 18);
+    assert_eq!(read("results.jsonl").lines().count(), 18);
+    // Every plan found executes in the cube world and is written; the phases add up.
     let mut solved = 0;
     for r in runs {
+        let t = &r["times"];
+        let parts = t["translate_s"].as_f64().unwrap()
+            + t["heuristic_s"].as_f64().unwrap()
+            + t["search_s"].as_f64().unwrap();
+        assert!(parts <= t["total_s"].as_f64().unwrap() + 1e-3, "{r}");
         if r["outcome"] == "solved" {
             solved += 1;
             assert_eq!(r["executed"], true, "{r}");
+            if r["level"] == "alg1" {
+                assert_eq!(r["widening"].as_array().map(Vec::len), Some(1), "{r}");
+                continue;
+            }
+            assert!(r["peak_memory_kb"].as_u64().unwrap() > 0, "{r}");
             let name = format!(
                 "plans/{}-prio-{}-goal-{}.plan",
                 r["planner"].as_str().unwrap(),
@@ -1803,6 +1831,8 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
     for figure in [
         "search-time-lmcut",
         "search-time-ipdb",
+        "total-time-lmcut",
+        "total-time-ipdb",
         "operators",
         "goal-1",
         "goal-2",
@@ -1829,6 +1859,156 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
         assert!(html.contains(link), "report.html does not link {link}");
     }
     assert!(read("operators.md").contains("# Operator cards"));
+}
+
+/// A reduced study: 2 seeds, towers of 2 and 3 cubes, one hand, both groupings.
+fn reduced_study(out: &Path) -> Output {
+    demoplan()
+        .arg("study")
+        .arg("-o")
+        .arg(out)
+        .args(["--seeds", "1-2", "--hands", "1", "--heights", "2-3"])
+        .args(["--activities", "settled,runs", "--time-limit", "5"])
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn study_writes_every_file_and_resumes() {
+    let tmp = tempdir("study");
+    let out = tmp.join("out");
+    let run = reduced_study(&out);
+    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    let stdout = String::from_utf8_lossy(&run.stdout).into_owned();
+    // 2 seeds x 2 groupings x 2 heights x 2 planners x 3 levels.
+    assert!(stdout.contains("48 runs (48 computed now"), "{stdout}");
+    let read = |name: &str| std::fs::read_to_string(out.join(name)).unwrap();
+
+    // runs.csv: one row per run, conditions and the four times.
+    let runs = read("runs.csv");
+    let mut lines = runs.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 48);
+    let mut levels = std::collections::BTreeSet::new();
+    for row in &rows {
+        assert_eq!(row.len(), header.len(), "{row:?}");
+        levels.insert(row[col("level")]);
+        assert_eq!(
+            row[col("cubes")].parse::<usize>().unwrap(),
+            row[col("height")].parse::<usize>().unwrap()
+        );
+        let t = |c: &str| row[col(c)].parse::<f64>().unwrap();
+        assert!(t("translate_s") + t("heuristic_s") + t("search_s") <= t("total_s") + 1e-3);
+        if row[col("outcome")] == "solved" {
+            assert_eq!(row[col("executed")], "true", "{row:?}");
+        }
+    }
+    assert_eq!(
+        levels.into_iter().collect::<Vec<_>>(),
+        ["alg1", "full", "prio-1"]
+    );
+
+    // ratios.csv: per condition (2 groupings x 2 heights), planner, measure and ratio.
+    let ratios = read("ratios.csv");
+    assert!(ratios.starts_with(
+        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n"
+    ));
+    assert_eq!(ratios.lines().count(), 1 + 2 * 2 * 2 * 2 * 2, "{ratios}");
+    for line in ratios.lines().skip(1) {
+        let f: Vec<&str> = line.split(',').collect();
+        assert_eq!(f[13], "2", "{line}");
+        // A ratio for every seed, or the seeds without one counted.
+        if f[15] == "0" {
+            assert!(!f[17].is_empty(), "{line}");
+        }
+    }
+    // With every Idle apart, priority 1 builds no tower of 3: no ratio_p1, Algorithm 1
+    // widens and the page shows its levels with their cumulative time.
+    assert!(
+        ratios.contains("3,4,default,1,3,1,0,3,runs,false,lmcut,search,ratio_p1,2,0,2,,,"),
+        "{ratios}"
+    );
+    let html = read("report.html");
+    assert!(html.contains("went past priority 1"), "{html}");
+    for link in [
+        "runs.csv",
+        "ratios.csv",
+        "scaling.svg",
+        "scaling.png",
+        "results.jsonl",
+    ] {
+        assert!(html.contains(link), "report.html does not link {link}");
+    }
+    for figure in ["scaling", "scaling-total"] {
+        let svg = read(&format!("{figure}.svg"));
+        assert!(svg.trim_end().ends_with("</svg>"), "{figure}");
+        assert!(
+            svg.contains("priority 1") && svg.contains("Algorithm 1"),
+            "{figure}"
+        );
+        assert!(svg.contains("<polygon"), "{figure}: no quartile band");
+        let png = std::fs::read(out.join(format!("{figure}.png"))).unwrap();
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{figure}");
+    }
+
+    // Run again: nothing to compute, the same results.
+    let results = read("results.jsonl");
+    let again = reduced_study(&out);
+    assert_eq!(again.status.code(), Some(0), "{}", transcript(&again));
+    assert!(
+        String::from_utf8_lossy(&again.stdout).contains("48 runs (0 computed now, 48 from earlier"),
+        "{}",
+        transcript(&again)
+    );
+    assert_eq!(read("results.jsonl"), results);
+    assert_eq!(read("runs.csv"), runs);
+
+    // A run killed while appending leaves half a line: that cell runs again, once.
+    let mut lines: Vec<&str> = results.lines().collect();
+    let last = lines.pop().unwrap();
+    let cut = format!("{}\n{}", lines.join("\n"), &last[..last.len() / 2]);
+    std::fs::write(out.join("results.jsonl"), cut).unwrap();
+    let resumed = reduced_study(&out);
+    assert_eq!(resumed.status.code(), Some(0), "{}", transcript(&resumed));
+    assert!(
+        String::from_utf8_lossy(&resumed.stdout).contains("48 runs (1 computed now"),
+        "{}",
+        transcript(&resumed)
+    );
+    assert_eq!(read("results.jsonl").lines().count(), 48);
+}
+
+#[test]
+fn study_refuses_bad_options_before_writing_anything() {
+    let tmp = tempdir("study-options");
+    for (args, what) in [
+        (vec!["--heights", "1-3"], "--heights"),
+        (vec!["--seeds", "5-1"], "--seeds"),
+        (vec!["--seeds", "one"], "--seeds"),
+        (vec!["--hands", "3"], "--hands"),
+        (vec!["--towers", "0"], "--towers"),
+        (vec!["--activities", "settled,sometimes"], "--activities"),
+        (vec!["--heights", "8", "--towers", "4"], "cubes"),
+        (vec!["--time-limit", "soon"], "--time-limit"),
+    ] {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .args(["study", "-o", "out"])
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(36),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(what), "{args:?}: {err}");
+        assert!(!tmp.join("out").exists(), "{args:?} wrote output");
+    }
 }
 
 #[test]
@@ -1913,6 +2093,66 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
             "{stderr}"
         );
         assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+}
+
+/// A hand-state table of `rows` rows whose activity changes every ten rows (a third of a
+/// second at the tables' 30 frames a second): many segments.
+fn busy_hand_table(rows: usize) -> String {
+    let mut text = String::from(
+        "@relation busy\n@attribute Hand {NotMove, Move}\n\
+         @attribute ObjectActedOn {None, cube}\n@attribute ObjectInHand {None, cube}\n\
+         @attribute Activity {IdleMotion, Reach}\n@data\n",
+    );
+    for i in 0..rows {
+        text.push_str(if (i / 10) % 2 == 0 {
+            "NotMove,None,None,IdleMotion\n"
+        } else {
+            "Move,cube,None,Reach\n"
+        });
+    }
+    text
+}
+
+/// `segment FILE | head -1`, `classify FILE... | head -1`: the reader goes away and
+/// demoplan stops with a shell's SIGPIPE code, printing nothing (it printed `error: `).
+#[test]
+fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
+    let tmp = tempdir("closed-pipe");
+    std::fs::write(tmp.join("busy.arff"), busy_hand_table(40_000)).unwrap();
+    std::fs::write(tmp.join("small.arff"), busy_hand_table(40)).unwrap();
+    let many_tables: Vec<&str> = std::iter::repeat_n("small.arff", 1_000).collect();
+    let runs: [Vec<&str>; 3] = [
+        vec!["segment", "busy.arff"],
+        vec!["segment", "--json", "busy.arff"],
+        [&["classify"][..], &many_tables].concat(),
+    ];
+    for args in runs {
+        // Far more than a pipe holds (64 KB): the writer meets the closed pipe.
+        let full = demoplan().current_dir(&tmp).args(&args).output().unwrap();
+        assert_eq!(full.status.code(), Some(0), "{}", transcript(&full));
+        assert!(
+            full.stdout.len() > 128 * 1024,
+            "{}: {}",
+            args[0],
+            full.stdout.len()
+        );
+        let mut child = demoplan()
+            .current_dir(&tmp)
+            .args(&args)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stdout.take());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(141),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(out.stderr.is_empty(), "{args:?}: {}", transcript(&out));
     }
 }
 
@@ -2209,4 +2449,34 @@ fn learn_takes_a_folder_of_unity_logs_like_the_logs_in_it() {
     };
     let named = learn(&["logs/p01-d02.json", "logs/p01-d03.json"], "named.json");
     assert_eq!(learn(&["logs"], "folder.json"), named);
+}
+
+/// One mapping file serves every command: the import crate's keys for Unity logs
+/// (`max_age`, `[[entity]]`) and the `[labels]` that `classify` maps ARFF labels with.
+#[test]
+fn one_mapping_file_serves_classify_and_the_unity_commands() {
+    let mapping = demonstrations().join("one-mapping.toml");
+    let tables = format!("{}/../segment/tests/fixtures", env!("CARGO_MANIFEST_DIR"));
+    let classify = demoplan()
+        .current_dir(&tables)
+        .args(["classify", "recogniser-labels.txt", "--mapping"])
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    // Pour is Put by the file's [labels]: no frame is left out.
+    assert!(String::from_utf8_lossy(&classify.stdout).starts_with(
+        "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
+    ));
+    assert!(classify.stderr.is_empty(), "{}", transcript(&classify));
+    let log = unity_fixtures().join("p01-d03.json");
+    let segment = demoplan()
+        .arg("segment")
+        .arg(&log)
+        .arg("--mapping")
+        .arg(&mapping)
+        .output()
+        .unwrap();
+    assert_eq!(segment.status.code(), Some(0), "{}", transcript(&segment));
+    assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
 }

@@ -21,12 +21,14 @@
 //! assert!(Library::default().is_empty());
 //! ```
 
+mod cards;
 mod domain;
 mod hash;
 mod library;
 mod operator;
 mod pipeline;
 
+pub use cards::{cards_markdown, cards_text, domain_text, summary_table};
 pub use domain::{
     action, domain, domain_name, levels, operator_subset, paper_goal_tower, pddl_predicate,
     per_type, problem, tower_goal, DomainOptions, Level, Scene, DEFAULT_CUBES, DEFAULT_HANDS,

@@ -109,6 +109,11 @@ pub enum Shape {
         fill: Option<Color>,
         stroke: Option<Stroke>,
     },
+    /// A filled polygon without outline (a quartile band).
+    Polygon {
+        points: Vec<Point>,
+        fill: Color,
+    },
     Circle {
         center: Point,
         r: f64,
@@ -186,6 +191,10 @@ impl Figure {
             fill,
             stroke,
         });
+    }
+
+    pub fn polygon(&mut self, points: Vec<Point>, fill: Color) {
+        self.push(Shape::Polygon { points, fill });
     }
 
     pub fn circle(&mut self, center: Point, r: f64, fill: Option<Color>, stroke: Option<Stroke>) {
@@ -336,6 +345,18 @@ fn svg_shape(s: &mut String, shape: &Shape) {
                 r#"<polyline points="{}" fill="none"{} stroke-linejoin="round" stroke-linecap="round"/>"#,
                 pts.join(" "),
                 stroke_attrs(stroke)
+            );
+        }
+        Shape::Polygon { points, fill } => {
+            let pts: Vec<String> = points
+                .iter()
+                .map(|p| format!("{},{}", num(p.x), num(p.y)))
+                .collect();
+            let _ = writeln!(
+                s,
+                r#"<polygon points="{}" fill="{}" stroke="none"/>"#,
+                pts.join(" "),
+                fill.hex()
             );
         }
         Shape::Rect {

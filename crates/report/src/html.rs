@@ -3,34 +3,10 @@
 use std::fmt::Write as _;
 
 use crate::model::{
-    domain_label, format_limit, format_seconds, planner_label, slimming_ratio, time_cell,
-    Experiment, Outcome, Run, TYPE_NAMES,
+    domain_label, format_limit, format_seconds, planner_label, slimming_ratio_by, time_cell_by,
+    Experiment, Measure, Outcome, Run, TYPE_NAMES,
 };
-
-/// The paper's title.
-pub const PAPER_TITLE: &str =
-    "Optimizing robot planning domains to reduce search time for long-horizon planning";
-
-/// Operators of the paper's five domains (its Figure 3).
-pub const PAPER_OPERATORS: [usize; 5] = [5, 11, 18, 23, 30];
-
-/// The paper's Table 3 (iPDB), search time in seconds as printed, domain by goal.
-pub const PAPER_IPDB: [[&str; 5]; 5] = [
-    ["0.0005", "0.00066", "0.0011", "0.0013", "2.499"],
-    ["0.00042", "0.00065", "0.0011", "0.1626", "11.2901"],
-    ["0.0005", "0.00061", "0.0011", "1.6405", "124.2"],
-    ["0.00042", "0.00064", "0.0011", "1.0601", "144.769"],
-    ["0.0005", "0.00093", "0.00081", "1.2987", "180.652"],
-];
-
-/// The paper's Table 4 (LM-cut), search time in seconds as printed, domain by goal.
-pub const PAPER_LMCUT: [[&str; 5]; 5] = [
-    ["0.00048", "0.0015", "0.0046", "0.2877", "14.30"],
-    ["0.00085", "0.0028", "0.0103", "0.977", "47.415"],
-    ["0.00072", "0.0093", "0.0751", "13.081", "882.75"],
-    ["0.0008", "0.01135", "0.0890", "15.96", "1295.11"],
-    ["0.0018", "0.01348", "0.1588", "23.186", "1725.18"],
-];
+pub use crate::paper::{PAPER_IPDB, PAPER_LMCUT, PAPER_OPERATORS, PAPER_TITLE};
 
 /// A plain table of texts: a header row and body rows of the same width.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -70,6 +46,11 @@ pub const RATIO_ROW: &str = "largest / smallest";
 /// `error`, or `-` for a run that is missing. A last row gives the ratio of the largest
 /// domain over the smallest per goal (`>= 30x` when the largest hit the limit).
 pub fn search_time_table(exp: &Experiment, planner: &str) -> Table {
+    time_table(exp, planner, Measure::Search)
+}
+
+/// [`search_time_table`] by any [`Measure`].
+pub fn time_table(exp: &Experiment, planner: &str, measure: Measure) -> Table {
     let goals = exp.goal_numbers();
     let mut header = vec!["domain".to_string()];
     header.extend(goals.iter().map(|g| format!("Goal {g}")));
@@ -78,7 +59,7 @@ pub fn search_time_table(exp: &Experiment, planner: &str) -> Table {
         let mut row = vec![domain_label(prio, ops)];
         row.extend(goals.iter().map(|&g| {
             exp.run(planner, prio, g)
-                .map(time_cell)
+                .map(|r| time_cell_by(r, measure))
                 .unwrap_or_else(|| "-".to_string())
         }));
         rows.push(row);
@@ -86,7 +67,7 @@ pub fn search_time_table(exp: &Experiment, planner: &str) -> Table {
     if exp.domains().len() > 1 {
         let mut row = vec![RATIO_ROW.to_string()];
         row.extend(goals.iter().map(|&g| {
-            slimming_ratio(exp, planner, g)
+            slimming_ratio_by(exp, planner, g, measure)
                 .map(|r| r.to_string())
                 .unwrap_or_else(|| "-".to_string())
         }));
@@ -178,7 +159,7 @@ fn paper_table_of(planner: &str) -> Option<(&'static str, &'static [[&'static st
     }
 }
 
-fn times_table(s: &mut String, exp: &Experiment, planner: &str) {
+fn times_table(s: &mut String, exp: &Experiment, planner: &str, measure: Measure) {
     let goals = exp.goal_numbers();
     let domains = exp.domains();
     s.push_str("<table class=\"times\">\n<thead><tr><th>domain</th>");
@@ -201,7 +182,7 @@ fn times_table(s: &mut String, exp: &Experiment, planner: &str) {
                         "<td class=\"{}\" title=\"{}\">{}{}</td>",
                         cell_class(run),
                         html_escape(&run_details(run)),
-                        html_escape(&time_cell(run)),
+                        html_escape(&time_cell_by(run, measure)),
                         mark
                     );
                 }
@@ -213,7 +194,7 @@ fn times_table(s: &mut String, exp: &Experiment, planner: &str) {
     if domains.len() > 1 {
         let _ = write!(s, "<tr class=\"ratio\"><th>{RATIO_ROW}</th>");
         for &g in &goals {
-            let text = slimming_ratio(exp, planner, g)
+            let text = slimming_ratio_by(exp, planner, g, measure)
                 .map(|r| r.to_string())
                 .unwrap_or_else(|| "-".to_string());
             let _ = write!(s, "<td class=\"num\">{}</td>", html_escape(&text));
@@ -441,7 +422,19 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
             html_escape(&planner_label(&planner)),
             as_paper
         );
-        times_table(&mut s, exp, &planner);
+        times_table(&mut s, exp, &planner, Measure::Search);
+    }
+    if !exp.runs.is_empty() {
+        s.push_str("<h2>Total time</h2>\n");
+        s.push_str(
+            "<p>The same runs by total time in seconds: translation, heuristic construction \
+             (iPDB's hill climbing, LM-cut's relaxed task) and search together, which is what a \
+             user waits for. The last row is the same ratio on this measure.</p>\n",
+        );
+        for planner in exp.planners() {
+            let _ = writeln!(s, "<h3>{}</h3>", html_escape(&planner_label(&planner)));
+            times_table(&mut s, exp, &planner, Measure::Total);
+        }
     }
     if exp.runs.is_empty() {
         s.push_str("<p>No runs.</p>\n");

@@ -29,20 +29,23 @@ mod draw;
 mod font;
 mod html;
 mod model;
+pub mod paper;
 mod plots;
 pub mod png;
 mod raster;
 
 pub use draw::{pt, text_width, Anchor, Color, Figure, Point, Shape, Stroke, Text};
 pub use html::{
-    html_escape, report_html, search_time_table, Table, PAPER_IPDB, PAPER_LMCUT, PAPER_OPERATORS,
-    PAPER_TITLE, RATIO_ROW,
+    html_escape, report_html, search_time_table, time_table, Table, PAPER_IPDB, PAPER_LMCUT,
+    PAPER_OPERATORS, PAPER_TITLE, RATIO_ROW,
 };
 pub use model::{
-    domain_label, format_limit, format_seconds, planner_label, ratio, slimming_ratio, time_cell,
-    Bound, Experiment, Goal, Level, Outcome, Ratio, Run, PLANNER_ORDER, TYPE_NAMES,
+    domain_label, format_limit, format_seconds, planner_label, ratio, ratio_by, slimming_ratio,
+    slimming_ratio_by, time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome,
+    Ratio, Run, PLANNER_ORDER, TYPE_NAMES,
 };
 pub use plots::{
-    decade_label, goal_figure, goals_figure, operators_figure, search_time_figure, LogScale,
+    decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,
+    time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,
 };
 pub use raster::Canvas;

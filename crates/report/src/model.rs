@@ -35,6 +35,49 @@ pub struct Run {
     pub executed: Option<bool>,
 }
 
+/// Which of a run's times a table, figure or ratio shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Measure {
+    /// The search proper, without translation or heuristic construction: what Fast
+    /// Downward prints as "Search time" and the paper's Tables 3 and 4 report.
+    Search,
+    /// The whole run: translation, heuristic construction (iPDB's hill climbing) and
+    /// search.
+    Total,
+}
+
+impl Measure {
+    /// Both, the paper's first.
+    pub const ALL: [Measure; 2] = [Measure::Search, Measure::Total];
+
+    /// `"search"` or `"total"`, as in file names and CSV columns.
+    pub fn name(self) -> &'static str {
+        match self {
+            Measure::Search => "search",
+            Measure::Total => "total",
+        }
+    }
+
+    /// `"Search time"` or `"Total time"`.
+    pub fn title(self) -> &'static str {
+        match self {
+            Measure::Search => "Search time",
+            Measure::Total => "Total time",
+        }
+    }
+}
+
+impl Run {
+    /// The run's time by `measure`, in seconds.
+    pub fn time(&self, measure: Measure) -> f64 {
+        match measure {
+            Measure::Search => self.search_time,
+            Measure::Total => self.total_time,
+        }
+    }
+}
+
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -272,8 +315,13 @@ pub fn format_limit(limit: f64) -> String {
 /// The table cell for a run's search time: the seconds, `> limit`, `unsolvable` or
 /// `error`.
 pub fn time_cell(run: &Run) -> String {
+    time_cell_by(run, Measure::Search)
+}
+
+/// [`time_cell`] by any [`Measure`].
+pub fn time_cell_by(run: &Run, measure: Measure) -> String {
     match run.outcome {
-        Outcome::Solved => format_seconds(run.search_time),
+        Outcome::Solved => format_seconds(run.time(measure)),
         Outcome::Limit => "> limit".to_string(),
         Outcome::Unsolvable => "unsolvable".to_string(),
         Outcome::Error => "error".to_string(),
@@ -320,13 +368,20 @@ impl std::fmt::Display for Ratio {
 /// ratio a bound; `None` when either run is unsolvable or an error, both hit the limit,
 /// or the denominator is zero.
 pub fn ratio(slow: &Run, fast: &Run) -> Option<Ratio> {
-    let usable = |r: &Run| matches!(r.outcome, Outcome::Solved | Outcome::Limit);
-    if !usable(slow)
-        || !usable(fast)
-        || fast.search_time.is_nan()
-        || fast.search_time <= 0.0
-        || !slow.search_time.is_finite()
-    {
+    ratio_by(slow, fast, Measure::Search)
+}
+
+/// [`ratio`] by any [`Measure`].
+pub fn ratio_by(slow: &Run, fast: &Run, measure: Measure) -> Option<Ratio> {
+    // A run stopped before its search expanded a state (the hill climbing took the whole
+    // limit) has no search time at all, not even a bound.
+    let usable = |r: &Run| match r.outcome {
+        Outcome::Solved => true,
+        Outcome::Limit => measure == Measure::Total || r.expansions != Some(0),
+        _ => false,
+    };
+    let (s, f) = (slow.time(measure), fast.time(measure));
+    if !usable(slow) || !usable(fast) || f.is_nan() || f <= 0.0 || !s.is_finite() {
         return None;
     }
     let bound = match (slow.outcome, fast.outcome) {
@@ -336,7 +391,7 @@ pub fn ratio(slow: &Run, fast: &Run) -> Option<Ratio> {
         _ => Bound::Exact,
     };
     Some(Ratio {
-        value: slow.search_time / fast.search_time,
+        value: s / f,
         bound,
     })
 }
@@ -344,6 +399,16 @@ pub fn ratio(slow: &Run, fast: &Run) -> Option<Ratio> {
 /// For `planner` and `goal`: the search-time ratio of the largest domain (highest
 /// priority level with a run) over the smallest (lowest).
 pub fn slimming_ratio(exp: &Experiment, planner: &str, goal: usize) -> Option<Ratio> {
+    slimming_ratio_by(exp, planner, goal, Measure::Search)
+}
+
+/// [`slimming_ratio`] by any [`Measure`].
+pub fn slimming_ratio_by(
+    exp: &Experiment,
+    planner: &str,
+    goal: usize,
+    measure: Measure,
+) -> Option<Ratio> {
     let mut runs: Vec<&Run> = exp
         .runs
         .iter()
@@ -354,7 +419,7 @@ pub fn slimming_ratio(exp: &Experiment, planner: &str, goal: usize) -> Option<Ra
     if first.prio == last.prio {
         return None;
     }
-    ratio(last, first)
+    ratio_by(last, first, measure)
 }
 
 #[cfg(test)]
@@ -404,6 +469,17 @@ mod tests {
         );
         assert_eq!(r.map(|r| r.to_string()), Some(">= 30x".to_string()));
         assert_eq!(ratio(&slow, &run(1, Outcome::Limit, 60.0)), None);
+        // Stopped before the search expanded a state: no search time, so no ratio by
+        // it; by total time still a bound.
+        let climbed = Run {
+            expansions: Some(0),
+            ..slow.clone()
+        };
+        assert_eq!(ratio(&climbed, &fast), None);
+        assert_eq!(
+            ratio_by(&climbed, &fast, Measure::Total).map(|r| r.bound),
+            Some(Bound::AtLeast)
+        );
         assert_eq!(ratio(&slow, &run(1, Outcome::Unsolvable, 1.0)), None);
         let exp = Experiment {
             runs: vec![slow, fast],

@@ -4,7 +4,8 @@
 
 use crate::draw::{pt, text_width, Anchor, Color, Figure, Point, Stroke, Text};
 use crate::model::{
-    domain_label, format_limit, planner_label, Experiment, Goal, Level, Outcome, Run, TYPE_NAMES,
+    domain_label, format_limit, planner_label, Experiment, Goal, Level, Measure, Outcome, Run,
+    TYPE_NAMES,
 };
 
 /// Line colours for domains, by priority order (Okabe-Ito, readable when printed grey).
@@ -167,17 +168,30 @@ fn cross_marker(fig: &mut Figure, at: Point, color: Color) {
 /// the limit with a "> limit" note, joined by dashed lines (the true time is higher);
 /// unsolvable runs are crosses; with repeats, a bar shows each run's min-max spread.
 pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
+    time_figure(exp, planner, Measure::Search)
+}
+
+/// [`search_time_figure`] by any [`Measure`]: the same figure of total times, titled
+/// so (repeats' spreads are drawn for search time only, the one measure kept per
+/// repeat).
+pub fn time_figure(exp: &Experiment, planner: &str, measure: Measure) -> Figure {
     let (w, h) = (900u32, 580u32);
     let mut fig = Figure::new(
         w,
         h,
-        &format!("Search time per goal, {}", planner_label(planner)),
+        &format!("{} per goal, {}", measure.title(), planner_label(planner)),
     );
     let (left, right, top, bottom) = (116.0, 670.0, 60.0, 470.0);
     title(
         &mut fig,
-        &format!("Search time per goal: {}", planner_label(planner)),
+        &format!("{} per goal: {}", measure.title(), planner_label(planner)),
     );
+    let spread = |r: &Run| -> Vec<f64> {
+        match measure {
+            Measure::Search => r.times.clone(),
+            Measure::Total => Vec::new(),
+        }
+    };
 
     let runs: Vec<&Run> = exp.runs.iter().filter(|r| r.planner == planner).collect();
     let goals = exp.goal_numbers();
@@ -190,12 +204,12 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
     // Axes.
     let min_time = runs
         .iter()
-        .flat_map(|r| r.times.iter().copied().chain([r.search_time]))
+        .flat_map(|r| spread(r).into_iter().chain([r.time(measure)]))
         .filter(|t| *t > 0.0 && t.is_finite())
         .fold(f64::INFINITY, f64::min);
     let max_time = runs
         .iter()
-        .flat_map(|r| r.times.iter().copied().chain([r.search_time]))
+        .flat_map(|r| spread(r).into_iter().chain([r.time(measure)]))
         .filter(|t| t.is_finite())
         .fold(exp.time_limit, f64::max);
     let y = LogScale::covering(min_time, max_time, -3, bottom, top);
@@ -269,7 +283,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
         &mut fig,
         26.0,
         (top + bottom) / 2.0,
-        "search time (s), log scale",
+        &format!("{} (s), log scale", measure.title().to_lowercase()),
     );
 
     // The time limit.
@@ -310,7 +324,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
     for (i, &(prio, _)) in domains.iter().enumerate() {
         let color = DOMAIN_COLORS[i % DOMAIN_COLORS.len()];
         let dx = (i as f64 - (n - 1.0) / 2.0) * 7.0;
-        let point = |r: &Run| pt(gx(r.goal) + dx, y.map(r.search_time));
+        let point = |r: &Run| pt(gx(r.goal) + dx, y.map(r.time(measure)));
         let series: Vec<Option<&Run>> = goals
             .iter()
             .map(|&g| runs.iter().copied().find(|r| r.prio == prio && r.goal == g))
@@ -342,7 +356,7 @@ pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
             match r.outcome {
                 Outcome::Solved => {
                     let finite: Vec<f64> =
-                        r.times.iter().copied().filter(|t| t.is_finite()).collect();
+                        spread(r).into_iter().filter(|t| t.is_finite()).collect();
                     if finite.len() > 1 {
                         let lo = finite.iter().copied().fold(f64::INFINITY, f64::min);
                         let hi = finite.iter().copied().fold(f64::NEG_INFINITY, f64::max);
@@ -851,5 +865,283 @@ mod tests {
         assert_eq!(cube_label("cube_12"), "12");
         assert_eq!(cube_label("red"), "red");
         assert_eq!(cube_color("cube_1", 5), CUBE_COLORS[0]);
+    }
+}
+
+/// One point of a [`ScalingSeries`]: the quartiles of a time over the seeds and
+/// conditions of one tower height. `censored` says that a quartile is a bound (a run at
+/// the time limit decided it): drawn as an open marker at the bound.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScalingPoint {
+    pub height: usize,
+    pub q1: f64,
+    pub median: f64,
+    pub q3: f64,
+    pub censored: bool,
+}
+
+/// One line of a scaling panel: e.g. `"priority 1"`, `"full"`, `"Algorithm 1"`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScalingSeries {
+    pub label: String,
+    pub points: Vec<ScalingPoint>,
+}
+
+/// One panel of [`scaling_figure`]: one planner's series.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ScalingPanel {
+    pub title: String,
+    pub series: Vec<ScalingSeries>,
+}
+
+/// The study's scaling figure: a time (`measure`) against tower height, one panel per
+/// planner side by side, one line per series (the median, a light band from the first
+/// to the third quartile), on a log axis shared by the panels. Censored medians are
+/// open markers; the time limit is a dashed red line.
+pub fn scaling_figure(
+    title_text: &str,
+    measure: Measure,
+    panels: &[ScalingPanel],
+    time_limit: f64,
+) -> Figure {
+    let panel_w = 360.0;
+    let (left, top, bottom) = (100.0, 70.0, 430.0);
+    let legend_w = 200.0;
+    let n = panels.len().max(1) as f64;
+    let w = (left + n * panel_w + legend_w) as u32;
+    let h = 520u32;
+    let mut fig = Figure::new(w, h, title_text);
+    title(&mut fig, title_text);
+    let values = panels
+        .iter()
+        .flat_map(|p| &p.series)
+        .flat_map(|s| &s.points)
+        .flat_map(|p| [p.q1, p.median, p.q3]);
+    let (mut min, mut max) = (f64::INFINITY, time_limit);
+    for v in values {
+        if v > 0.0 && v.is_finite() {
+            min = min.min(v);
+            max = max.max(v);
+        }
+    }
+    let y = LogScale::covering(min, max, -2, bottom, top);
+    let heights: Vec<usize> = {
+        let mut hs: Vec<usize> = panels
+            .iter()
+            .flat_map(|p| &p.series)
+            .flat_map(|s| s.points.iter().map(|p| p.height))
+            .collect();
+        hs.sort_unstable();
+        hs.dedup();
+        hs
+    };
+    let (hmin, hmax) = (
+        heights.first().copied().unwrap_or(1),
+        heights.last().copied().unwrap_or(2),
+    );
+    let span = (hmax - hmin).max(1) as f64;
+    for (i, panel) in panels.iter().enumerate() {
+        let x0 = left + i as f64 * panel_w;
+        let x1 = x0 + panel_w - 40.0;
+        let gx = |height: usize| x0 + 20.0 + (height - hmin) as f64 / span * (x1 - x0 - 40.0);
+        fig.rect(
+            x0,
+            top,
+            x1 - x0,
+            bottom - top,
+            None,
+            Some(Stroke::solid(GRID, 1.0)),
+        );
+        for k in y.decades() {
+            let py = y.map(10f64.powi(k));
+            fig.line(pt(x0, py), pt(x1, py), Stroke::solid(GRID, 1.0));
+            if i == 0 {
+                text(
+                    &mut fig,
+                    pt(x0 - 8.0, py + 5.0),
+                    &decade_label(k),
+                    2,
+                    Anchor::End,
+                    INK,
+                );
+            }
+        }
+        for &hh in &heights {
+            text(
+                &mut fig,
+                pt(gx(hh), bottom + 24.0),
+                &hh.to_string(),
+                2,
+                Anchor::Middle,
+                INK,
+            );
+        }
+        text(
+            &mut fig,
+            pt((x0 + x1) / 2.0, top - 10.0),
+            &panel.title,
+            2,
+            Anchor::Middle,
+            INK,
+        );
+        text(
+            &mut fig,
+            pt((x0 + x1) / 2.0, bottom + 50.0),
+            "tower height (cubes)",
+            2,
+            Anchor::Middle,
+            INK,
+        );
+        let ly = y.map(time_limit);
+        fig.line(pt(x0, ly), pt(x1, ly), Stroke::dashed(LIMIT, 1.5, 6.0, 4.0));
+        for (j, series) in panel.series.iter().enumerate() {
+            let color = DOMAIN_COLORS[j % DOMAIN_COLORS.len()];
+            let band = Color(
+                ((u16::from(color.0) + 3 * 255) / 4) as u8,
+                ((u16::from(color.1) + 3 * 255) / 4) as u8,
+                ((u16::from(color.2) + 3 * 255) / 4) as u8,
+            );
+            let mut outline: Vec<Point> = series
+                .points
+                .iter()
+                .map(|p| pt(gx(p.height), y.map(p.q3)))
+                .collect();
+            outline.extend(
+                series
+                    .points
+                    .iter()
+                    .rev()
+                    .map(|p| pt(gx(p.height), y.map(p.q1))),
+            );
+            if series.points.len() > 1 {
+                fig.polygon(outline, band);
+            }
+        }
+        for (j, series) in panel.series.iter().enumerate() {
+            let color = DOMAIN_COLORS[j % DOMAIN_COLORS.len()];
+            let line: Vec<Point> = series
+                .points
+                .iter()
+                .map(|p| pt(gx(p.height), y.map(p.median)))
+                .collect();
+            fig.polyline(line, Stroke::solid(color, 2.5));
+            for p in &series.points {
+                let at = pt(gx(p.height), y.map(p.median));
+                if p.censored {
+                    open_marker(&mut fig, at, color);
+                } else {
+                    dot_marker(&mut fig, at, color);
+                }
+            }
+        }
+    }
+    vertical_label(
+        &mut fig,
+        26.0,
+        (top + bottom) / 2.0,
+        &format!("{} (s), log scale", measure.title().to_lowercase()),
+    );
+    // Legend: the series of the first panel (every panel has the same ones).
+    let lx = left + n * panel_w;
+    let mut row = top + 18.0;
+    let labels: Vec<&str> = panels
+        .first()
+        .map(|p| p.series.iter().map(|s| s.label.as_str()).collect())
+        .unwrap_or_default();
+    for (j, label) in labels.iter().enumerate() {
+        let color = DOMAIN_COLORS[j % DOMAIN_COLORS.len()];
+        fig.line(
+            pt(lx, row - 5.0),
+            pt(lx + 30.0, row - 5.0),
+            Stroke::solid(color, 2.5),
+        );
+        text(
+            &mut fig,
+            pt(lx + 40.0, row + 2.0),
+            label,
+            2,
+            Anchor::Start,
+            INK,
+        );
+        row += 26.0;
+    }
+    text(
+        &mut fig,
+        pt(lx, row + 10.0),
+        "line: median",
+        2,
+        Anchor::Start,
+        Color::GREY,
+    );
+    text(
+        &mut fig,
+        pt(lx, row + 34.0),
+        "band: quartiles",
+        2,
+        Anchor::Start,
+        Color::GREY,
+    );
+    text(
+        &mut fig,
+        pt(lx, row + 58.0),
+        "open: a bound",
+        2,
+        Anchor::Start,
+        Color::GREY,
+    );
+    text(
+        &mut fig,
+        pt(lx, row + 82.0),
+        "dashed: limit",
+        2,
+        Anchor::Start,
+        LIMIT,
+    );
+    fig
+}
+
+#[cfg(test)]
+mod scaling_tests {
+    use super::*;
+    use crate::draw::Shape;
+
+    #[test]
+    fn the_scaling_figure_draws_a_band_and_a_line_per_series() {
+        let point = |height, m: f64| ScalingPoint {
+            height,
+            q1: m / 2.0,
+            median: m,
+            q3: m * 2.0,
+            censored: height == 4,
+        };
+        let panel = ScalingPanel {
+            title: "demoplan astar(lmcut())".into(),
+            series: vec![
+                ScalingSeries {
+                    label: "priority 1".into(),
+                    points: vec![point(2, 0.01), point(3, 0.1), point(4, 1.0)],
+                },
+                ScalingSeries {
+                    label: "full".into(),
+                    points: vec![point(2, 0.02), point(3, 0.5), point(4, 20.0)],
+                },
+            ],
+        };
+        let fig = scaling_figure("Search time", Measure::Search, &[panel], 20.0);
+        let bands = fig
+            .shapes()
+            .iter()
+            .filter(|s| matches!(s, Shape::Polygon { .. }))
+            .count();
+        let lines = fig
+            .shapes()
+            .iter()
+            .filter(|s| matches!(s, Shape::Polyline { .. }))
+            .count();
+        assert_eq!((bands, lines), (2, 2));
+        let svg = fig.svg();
+        assert!(svg.contains("<polygon"), "{svg}");
+        assert!(svg.contains("tower height"));
+        assert!(fig.png().starts_with(&crate::png::SIGNATURE));
     }
 }

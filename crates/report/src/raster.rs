@@ -282,6 +282,7 @@ impl Canvas {
                     self.path(&corners, st);
                 }
             }
+            Shape::Polygon { points, fill } => self.fill_polygon(points, *fill),
             Shape::Circle {
                 center,
                 r,

@@ -13,7 +13,8 @@
 //! J48 prints them and are stored as JSON. [`C45`] learns one from a [`Dataset`] of
 //! labelled cases. [`read_arff`] reads Weka ARFF tables, and
 //! [`ArffTable::hand_frames`] reads one as the hand-state frames of the activity
-//! recognisers this work builds on. [`evaluate`] measures segments against labels.
+//! recognisers this work builds on; [`ArffReader`] and [`HandTable`] read the same a row
+//! at a time, for tables of any length. [`evaluate`] measures segments against labels.
 //!
 //! ```
 //! use grounding::{GroundingConfig, Grounder};
@@ -48,8 +49,9 @@ mod segmenter;
 mod tree;
 
 pub use arff::{
-    dataset, is_arff_text, read_arff, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable,
-    ArffWarning, FrameActivities, HandFrames, LabelledFrame, WEKA_DUMMY_STRING,
+    dataset, is_arff_text, is_hand_state, read_arff, ArffAttribute, ArffError, ArffKind,
+    ArffReader, ArffRow, ArffTable, ArffWarning, FrameActivities, HandFrames, HandTable,
+    HandTableFrames, LabelledFrame, TableSegments, UnknownLabels, WEKA_DUMMY_STRING,
 };
 pub use c45::{add_errors, Case, Dataset, C45};
 pub use labels::{LabelMap, LabelMapError, UnknownLabel};

@@ -502,3 +502,65 @@ fn separators_collapse_and_type_trailers_are_ignored() {
     assert_eq!(table.attributes[0].kind, ArffKind::Numeric);
     assert_eq!(values(&table), [["1", "x"], ["2", "y"], ["0", "y"]]);
 }
+
+/// Read a row at a time from any `BufRead` (here one that hands out a byte at a time, and
+/// with Windows line ends), each fixture gives the rows `read_arff` gives for its text,
+/// and the two passes of `HandTable` give the frames `hand_frames` gives.
+#[test]
+fn rows_read_one_at_a_time_are_the_rows_of_the_whole_text() {
+    use segment::{ArffReader, HandTable};
+    use std::io::BufReader;
+    for name in [
+        "tabs.arff",
+        "quoted.arff",
+        "sparse.arff",
+        "sparse-types.arff",
+        "recogniser-labels.txt",
+        "messy-hand-state.arff",
+        "weather.nominal.arff",
+    ] {
+        let text = fixture(name);
+        let whole = read_arff(&text).unwrap();
+        for text in [text.clone(), text.replace('\n', "\r\n")] {
+            let reader = ArffReader::new(BufReader::with_capacity(1, text.as_bytes())).unwrap();
+            assert_eq!(reader.relation(), whole.relation, "{name}");
+            assert_eq!(reader.attributes(), whole.attributes, "{name}");
+            let rows: Vec<_> = reader.collect::<Result<_, _>>().unwrap();
+            assert_eq!(rows, whole.rows, "{name}");
+            if whole.is_hand_state() {
+                let table = HandTable::scan(
+                    &whole.relation,
+                    &whole.attributes,
+                    ArffReader::new(text.as_bytes()).unwrap(),
+                    30.0,
+                )
+                .unwrap();
+                let frames: Vec<_> = table
+                    .frames(ArffReader::new(text.as_bytes()).unwrap())
+                    .collect::<Result<_, _>>()
+                    .unwrap();
+                let in_memory = whole.hand_frames(30.0).unwrap();
+                assert_eq!(frames, in_memory.frames, "{name}");
+                assert_eq!(table.header, in_memory.header, "{name}");
+                assert_eq!(table.labels, in_memory.labels, "{name}");
+                assert_eq!(table.warnings, in_memory.warnings, "{name}");
+            }
+        }
+    }
+}
+
+/// A line that is not UTF-8 text is an error at that line, and the rows before it read.
+#[test]
+fn a_line_that_is_not_utf8_is_an_error_at_its_line() {
+    let mut bytes = b"@relation r\n@attribute a {x, y}\n@data\nx\ny\n".to_vec();
+    bytes.extend_from_slice(b"\xff\n");
+    let mut reader = segment::ArffReader::new(&bytes[..]).unwrap();
+    assert_eq!(reader.next().unwrap().unwrap().line, 4);
+    assert_eq!(reader.next().unwrap().unwrap().line, 5);
+    let e = reader.next().unwrap().unwrap_err();
+    assert_eq!(
+        (e.line, e.message.as_str()),
+        (6, "the line is not UTF-8 text")
+    );
+    assert!(reader.next().is_none());
+}

@@ -12,9 +12,11 @@
 
 use serde::{Deserialize, Serialize};
 
-/// A closed range `[min, max]` to draw from; written as a two-element JSON list.
+/// A closed range `[min, max]` to draw from; written as a two-element JSON list. A single
+/// number `x` reads as `[x, x]` (so a parameter that was once a single value, such as
+/// `hover`, still reads from older `--params` files).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(from = "[f64; 2]", into = "[f64; 2]")]
+#[serde(from = "IntervalText", into = "[f64; 2]")]
 pub struct Interval {
     /// Smallest value.
     pub min: f64,
@@ -31,6 +33,23 @@ impl Interval {
     /// The midpoint.
     pub fn mid(self) -> f64 {
         0.5 * (self.min + self.max)
+    }
+}
+
+/// How an [`Interval`] may be written: `[min, max]` or one number.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum IntervalText {
+    Range([f64; 2]),
+    Value(f64),
+}
+
+impl From<IntervalText> for Interval {
+    fn from(t: IntervalText) -> Interval {
+        match t {
+            IntervalText::Range(a) => a.into(),
+            IntervalText::Value(x) => Interval::new(x, x),
+        }
     }
 }
 
@@ -109,8 +128,9 @@ pub struct SimParams {
     pub approach_time: Interval,
     /// Fraction of the carry still to go when the descent starts (smooth transitions).
     pub approach_overlap: Interval,
-    /// Probability of hovering still above the target before descending.
-    pub hover: f64,
+    /// Per participant: probability of hovering still above the target before
+    /// descending (a careful placer checks the alignment first).
+    pub hover: Interval,
     /// How long a hover lasts (s).
     pub hover_time: Interval,
     /// Palm above a cube's centre when grasping it (m).
@@ -155,23 +175,31 @@ pub struct SimParams {
     pub between_pause: Interval,
     /// Still after opening the hand, before leaving (s).
     pub release_pause: Interval,
-    /// Probability of going back to rest between two placements.
-    pub return_between: f64,
-    /// Probability that a reach first heads for another cube and is redirected.
-    pub abort: f64,
+    /// Per participant: probability of going back to rest between two placements.
+    pub return_between: Interval,
+    /// Per participant: probability that a reach first heads for another cube and is
+    /// redirected (a change of mind, or a reach for the wrong cube).
+    pub abort: Interval,
     /// How far towards the wrong cube an aborted reach gets (fraction of the way).
     pub abort_fraction: Interval,
     /// When the redirection starts, as a fraction of the aborted movement's duration
     /// (below 1: blended into it; above 1: after a hesitation).
     pub abort_redirect: Interval,
-    /// Probability of opening and closing the hand again on a grasped cube.
-    pub regrasp: f64,
+    /// Per participant: probability of opening and closing the hand again on a grasped
+    /// cube (a grip found poor is corrected before lifting).
+    pub regrasp: Interval,
     /// How far a regrasp loosens the grip (below `release_grip`, so the cube is let go).
     pub regrasp_grip: Interval,
     /// How far the hand shifts while regrasping (m).
     pub regrasp_shift: Interval,
     /// After releasing without going back to rest, how far the hand rises (m).
     pub lift_away: Interval,
+    /// Per participant: probability that, after putting a cube down, the hand takes it
+    /// again, lifts it a little and sets it down once more on the same support
+    /// (straightening a cube that landed askew).
+    pub adjust: Interval,
+    /// How high an adjustment lifts the cube above its place (m).
+    pub adjust_lift: Interval,
 
     // ----- grip -----
     /// Grip of a relaxed hand, per participant.
@@ -203,8 +231,8 @@ pub struct SimParams {
     pub drift_z: f64,
     /// Periods of the drift's components (s).
     pub drift_period: Interval,
-    /// Small movements of a resting hand, per second.
-    pub fidget_rate: f64,
+    /// Per participant: small movements of a resting hand, per second.
+    pub fidget_rate: Interval,
     /// Their size (m).
     pub fidget_size: Interval,
     /// Duration of each of their two movements, out and back (s).
@@ -279,7 +307,7 @@ impl Default for SimParams {
             above_target: Interval::new(0.04, 0.10),
             approach_time: Interval::new(0.35, 0.65),
             approach_overlap: Interval::new(0.15, 0.45),
-            hover: 0.1,
+            hover: Interval::new(0.05, 0.4),
             hover_time: Interval::new(0.2, 0.6),
             grasp_height: 0.045,
             grasp_error: 0.004,
@@ -299,14 +327,16 @@ impl Default for SimParams {
             end_pause: Interval::new(0.5, 1.2),
             between_pause: Interval::new(0.2, 0.8),
             release_pause: Interval::new(0.1, 0.35),
-            return_between: 0.5,
-            abort: 0.08,
+            return_between: Interval::new(0.1, 0.9),
+            abort: Interval::new(0.0, 0.16),
             abort_fraction: Interval::new(0.35, 0.75),
             abort_redirect: Interval::new(0.55, 1.25),
-            regrasp: 0.08,
+            regrasp: Interval::new(0.0, 0.16),
             regrasp_grip: Interval::new(0.2, 0.35),
             regrasp_shift: Interval::new(0.008, 0.02),
             lift_away: Interval::new(0.06, 0.12),
+            adjust: Interval::new(0.1, 0.5),
+            adjust_lift: Interval::new(0.01, 0.03),
 
             grip_rest: Interval::new(0.15, 0.30),
             grip_open: Interval::new(0.02, 0.10),
@@ -322,7 +352,7 @@ impl Default for SimParams {
             drift: 0.006,
             drift_z: 0.0015,
             drift_period: Interval::new(3.0, 12.0),
-            fidget_rate: 0.03,
+            fidget_rate: Interval::new(0.0, 0.06),
             fidget_size: Interval::new(0.02, 0.06),
             fidget_time: Interval::new(0.5, 0.9),
 
@@ -406,6 +436,13 @@ impl SimParams {
             ("regrasp_shift", self.regrasp_shift),
             ("lift_away", self.lift_away),
             ("fidget_time", self.fidget_time),
+            ("hover", self.hover),
+            ("return_between", self.return_between),
+            ("abort", self.abort),
+            ("regrasp", self.regrasp),
+            ("adjust", self.adjust),
+            ("adjust_lift", self.adjust_lift),
+            ("fidget_rate", self.fidget_rate),
         ];
         for &(name, i) in intervals {
             if !(i.min.is_finite() && i.max.is_finite() && i.min <= i.max) {
@@ -455,7 +492,6 @@ impl SimParams {
             ("rest_height", self.rest_height),
             ("move_time_floor", self.move_time_floor),
             ("move_time_jitter", self.move_time_jitter),
-            ("hover", self.hover),
             ("grasp_height", self.grasp_height),
             ("grasp_error", self.grasp_error),
             ("placement_error", self.placement_error),
@@ -464,7 +500,6 @@ impl SimParams {
             ("wrist_wobble_deg", self.wrist_wobble_deg),
             ("drift", self.drift),
             ("drift_z", self.drift_z),
-            ("fidget_rate", self.fidget_rate),
             ("hand_noise", self.hand_noise),
             ("hand_jitter", self.hand_jitter),
             ("hand_rot_noise_deg", self.hand_rot_noise_deg),
@@ -481,10 +516,11 @@ impl SimParams {
         }
         for (name, p) in [
             ("left_handed", self.left_handed),
-            ("hover", self.hover),
-            ("return_between", self.return_between),
-            ("abort", self.abort),
-            ("regrasp", self.regrasp),
+            ("hover", self.hover.max),
+            ("return_between", self.return_between.max),
+            ("abort", self.abort.max),
+            ("regrasp", self.regrasp.max),
+            ("adjust", self.adjust.max),
             ("frame_drop", self.frame_drop),
             ("rest_after_grasp", self.rest_after_grasp.min),
             ("rest_after_grasp", self.rest_after_grasp.max),
@@ -579,10 +615,11 @@ mod tests {
         let back: SimParams = serde_json::from_str(&text).unwrap();
         assert_eq!(back, p);
         // A partial file overrides only what it names.
+        // A probability once written as one number reads as the interval [x, x].
         let partial: SimParams = serde_json::from_str(r#"{"cubes": 4, "hover": 0.5}"#).unwrap();
         assert_eq!(
             (partial.cubes, partial.hover, partial.frame_rate),
-            (4, 0.5, 90.0)
+            (4, Interval::new(0.5, 0.5), 90.0)
         );
         assert!(serde_json::from_str::<SimParams>(r#"{"cubez": 4}"#).is_err());
     }

@@ -268,7 +268,7 @@ impl<'a> Planner<'a> {
             .into_iter()
             .filter(|&c| c != cube && Support::Cube(c) != onto)
             .collect();
-        if !distractors.is_empty() && self.rng.chance(p.abort) {
+        if !distractors.is_empty() && self.rng.chance(self.who.abort) {
             let x = distractors[self.rng.below(distractors.len())];
             let f = self.draw(p.abort_fraction);
             let goal = self.cubes[x].pos + up(p.grasp_height);
@@ -325,7 +325,7 @@ impl<'a> Planner<'a> {
 
         // The grasp: rest after closing (Reach, Take, Put) or lift on the fly (Put2).
         let hold = self.draw(p.grip_hold);
-        let regrasp = self.rng.chance(p.regrasp);
+        let regrasp = self.rng.chance(self.who.regrasp);
         let rests = regrasp || self.rng.chance(self.who.rest_after_grasp);
         // Time for the grip to rise from open to the grab threshold.
         let to_grab = p.grip_close_time * ((hold - open) / (hold - p.grab_grip)).ln();
@@ -411,7 +411,7 @@ impl<'a> Planner<'a> {
         });
 
         // The approach: blended into the carry, or after hovering.
-        let approach_at = if self.rng.chance(p.hover) {
+        let approach_at = if self.rng.chance(self.who.hover) {
             lift_at + carry_time + self.draw(p.hover_time)
         } else {
             lift_at + carry_time * (1.0 - self.draw(p.approach_overlap))
@@ -442,7 +442,7 @@ impl<'a> Planner<'a> {
         let release_at = approach_at + approach_time - self.draw(p.release_lead);
         self.mark(h, release_at, Phase::Release, Some(cube), support_cube);
         self.grip(h, release_at, open, p.grip_open_time);
-        let leave_at = release_at + self.draw(p.release_pause);
+        let mut leave_at = release_at + self.draw(p.release_pause);
 
         // Update the planned scene.
         if let Some(below) = self.cubes[cube].on {
@@ -463,11 +463,17 @@ impl<'a> Planner<'a> {
         }
         let placed_palm = centre + up(clearance + p.grasp_height);
 
+        // An adjustment: the hand closes on the cube again where it stands, lifts it a
+        // little, straightens it over its support and sets it down once more.
+        if self.rng.chance(self.who.adjust) {
+            leave_at = self.adjust(h, side, cube, onto, leave_at, hold, to_grab);
+        }
+
         // The retreat: back to rest, or up and away towards the next cube.
         self.mark(h, leave_at, Phase::Retreat, None, None);
         let rest_grip = self.who.grip_rest;
         self.grip(h, leave_at + 0.15, rest_grip, p.grip_relax_time);
-        if last || self.rng.chance(p.return_between) {
+        if last || self.rng.chance(self.who.return_between) {
             let rest = self.hands[h].rest;
             let dur = self.duration(side, (rest - placed_palm).norm());
             let arc = self.draw(p.reach_arc);
@@ -500,6 +506,69 @@ impl<'a> Planner<'a> {
             // The next reach starts while the hand still rises.
             self.free_at[h] = leave_at + dur * self.rng.uniform(0.5, 0.9);
         }
+    }
+
+    /// Plans an adjustment of `cube`, just put on `onto` by the hand `h`, starting at
+    /// `from` with the palm still above it; returns when the hand may leave.
+    #[allow(clippy::too_many_arguments)]
+    fn adjust(
+        &mut self,
+        h: usize,
+        side: Side,
+        cube: usize,
+        onto: Support,
+        from: f64,
+        hold: f64,
+        to_grab: f64,
+    ) -> f64 {
+        let p = self.p;
+        let support_cube = match onto {
+            Support::Cube(s) => Some(s),
+            Support::Table { .. } => None,
+        };
+        self.mark(h, from, Phase::Grasp, Some(cube), Some(cube));
+        self.grip(h, from, hold, p.grip_close_time);
+        let lift_at = from + to_grab + self.draw(p.take_pause);
+        let rise = self.draw(p.adjust_lift);
+        let lift_time = self.rng.uniform(0.35, 0.55);
+        self.mark(h, lift_at, Phase::Carry, Some(cube), support_cube);
+        self.hands[h].moves.push(Move {
+            start: lift_at,
+            duration: lift_time,
+            goal: Goal::Relative(V3::new(0.0, 0.0, rise)),
+            arc: 0.0,
+        });
+        // Set down closer to the centre of the support than the first time.
+        let error = (
+            self.rng.gauss(0.0, 0.5 * p.placement_error),
+            self.rng.gauss(0.0, 0.5 * p.placement_error),
+        );
+        let align = self.rng.gauss(0.0, 0.5 * p.align_error_deg.to_radians());
+        let slow = if side == self.who.dominant {
+            1.0
+        } else {
+            p.off_hand_slowdown
+        };
+        let down_at = lift_at + lift_time + self.rng.uniform(0.1, 0.3);
+        let down_time = self.draw(p.approach_time) * slow;
+        let clearance = self.draw(p.place_clearance);
+        self.mark(h, down_at, Phase::Approach, Some(cube), support_cube);
+        self.hands[h].moves.push(Move {
+            start: down_at,
+            duration: down_time,
+            goal: Goal::Place {
+                onto,
+                height: clearance,
+                error,
+                align,
+            },
+            arc: 0.0,
+        });
+        let release_at = down_at + down_time - self.draw(p.release_lead);
+        self.mark(h, release_at, Phase::Release, Some(cube), support_cube);
+        let open = self.who.grip_open;
+        self.grip(h, release_at, open, p.grip_open_time);
+        release_at + self.draw(p.release_pause)
     }
 
     fn mark(
@@ -546,10 +615,10 @@ impl<'a> Planner<'a> {
             for (from, until) in windows {
                 let mut t = from + 0.5;
                 loop {
-                    if self.p.fidget_rate <= 0.0 {
+                    if self.who.fidget_rate <= 0.0 {
                         break;
                     }
-                    t += -(1.0 - self.rng.f64()).ln() / self.p.fidget_rate;
+                    t += -(1.0 - self.rng.f64()).ln() / self.who.fidget_rate;
                     let out = self
                         .rng
                         .uniform(self.p.fidget_time.min, self.p.fidget_time.max);

@@ -59,7 +59,9 @@ impl Side {
     }
 }
 
-/// A simulated person: the style drawn for them from the parameters' intervals.
+/// A simulated person: the style drawn for them from the parameters' intervals. A
+/// participant is one draw, so the people of two seeds differ as two real groups do; the
+/// probabilities below are per event (per reach, grasp, placement, second of rest).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Participant {
     /// `p01`, `p02`, ...
@@ -74,6 +76,18 @@ pub struct Participant {
     pub grip_rest: f64,
     /// Grip of the hand opened to grasp.
     pub grip_open: f64,
+    /// Probability of hovering above the target before descending.
+    pub hover: f64,
+    /// Probability of going back to rest between two placements.
+    pub return_between: f64,
+    /// Probability that a reach first heads for another cube.
+    pub abort: f64,
+    /// Probability of regrasping a cube before lifting it.
+    pub regrasp: f64,
+    /// Probability of lifting a cube just put down and setting it down again.
+    pub adjust: f64,
+    /// Small movements of a resting hand, per second.
+    pub fidget_rate: f64,
 }
 
 impl Participant {
@@ -88,6 +102,13 @@ impl Participant {
         } else {
             Side::Right
         };
+        let mut d = |i: crate::Interval| rng.uniform(i.min, i.max);
+        let hover = d(p.hover);
+        let return_between = d(p.return_between);
+        let abort = d(p.abort);
+        let regrasp = d(p.regrasp);
+        let adjust = d(p.adjust);
+        let fidget_rate = d(p.fidget_rate);
         Participant {
             code,
             dominant,
@@ -95,6 +116,12 @@ impl Participant {
             rest_after_grasp,
             grip_rest,
             grip_open,
+            hover,
+            return_between,
+            abort,
+            regrasp,
+            adjust,
+            fidget_rate,
         }
     }
 }

@@ -324,12 +324,13 @@ fn the_docs_list_every_parameter() {
 }
 
 /// Over a larger study, every kind of variety the simulator promises shows up in its own
-/// ground truth: aborted reaches, regrasps, hovering, fidgets of the idle hand, dropped
-/// frames.
+/// ground truth: aborted reaches, regrasps, hovering, adjustments of a cube put down,
+/// fidgets of the idle hand, dropped frames.
 #[test]
 fn the_variety_of_behaviour_shows_up() {
     let s = study(&SimParams::default(), 7, 4, 8).unwrap();
     let (mut aborted, mut regrasps, mut hovers, mut fidgets, mut gaps) = (0, 0, 0, 0, 0);
+    let mut adjustments = 0;
     for demo in &s.demonstrations {
         let hand = demo.hand.unwrap().entity().index();
         let idle = 1 - hand;
@@ -338,8 +339,19 @@ fn the_variety_of_behaviour_shows_up() {
         let mut reached: BTreeSet<EntityId> = BTreeSet::new();
         let mut released_in_grasp = false;
         let mut previous_in_hand = None;
+        // Cubes released since they were last grasped: grasping one again is an
+        // adjustment.
+        let mut released: BTreeSet<EntityId> = BTreeSet::new();
         for t in &truth {
             let h = &t.hands[hand];
+            if h.phase == Phase::Release {
+                released.extend(h.in_hand);
+            }
+            if let (None, Some(c)) = (previous_in_hand, h.in_hand) {
+                if released.remove(&c) {
+                    adjustments += 1;
+                }
+            }
             if h.phase == Phase::Reach {
                 reached.extend(h.target);
             }
@@ -367,6 +379,42 @@ fn the_variety_of_behaviour_shows_up() {
     assert!(aborted > 0, "no aborted reach");
     assert!(regrasps > 0, "no regrasp");
     assert!(hovers > 0, "no hover");
+    assert!(adjustments > 0, "no adjustment");
     assert!(fidgets > 0, "the idle hand never moves");
     assert!(gaps > 0, "no dropped frame");
+}
+
+/// A participant is a draw: every style lies in its interval, and the people of a study
+/// and of two seeds differ.
+#[test]
+fn participants_are_draws_of_the_style_distributions() {
+    let p = SimParams::default();
+    let mut styles = Vec::new();
+    for seed in 1..=10 {
+        for who in study(&p, seed, 3, 1).unwrap().participants {
+            for (value, range) in [
+                (who.mean_speed, p.mean_speed),
+                (who.rest_after_grasp, p.rest_after_grasp),
+                (who.hover, p.hover),
+                (who.return_between, p.return_between),
+                (who.abort, p.abort),
+                (who.regrasp, p.regrasp),
+                (who.adjust, p.adjust),
+                (who.fidget_rate, p.fidget_rate),
+            ] {
+                assert!(
+                    (range.min..=range.max).contains(&value),
+                    "{value} outside {range:?}"
+                );
+            }
+            styles.push((who.adjust, who.regrasp, who.hover, who.return_between));
+        }
+    }
+    styles.sort_by(|a, b| a.0.total_cmp(&b.0));
+    styles.dedup();
+    assert_eq!(
+        styles.len(),
+        30,
+        "two of 30 participants have the same style"
+    );
 }

@@ -85,32 +85,14 @@ impl FastDownward {
                         log.lines().rev().take(3).collect::<Vec<_>>().join(" / ")
                     )),
                 };
-                // The search component's "Total time" includes building the heuristic
-                // (iPDB's hill climbing), which its "Search time" leaves out; demoplan's
-                // search time includes it, so that is the one to compare.
-                let mut search_total = None;
-                for line in log.lines() {
-                    if let Some(rest) = line.split("Total time: ").nth(1) {
-                        search_total = Some(seconds(rest));
-                    } else if let Some(rest) = line.split("Search time: ").nth(1) {
-                        run.search_time = seconds(rest);
-                    } else if let Some(rest) = line.split("Done! [").nth(1) {
-                        // The translator's last line: "Done! [0.1s CPU, 0.1s wall-clock]".
-                        if let Some(wall) = rest.split(", ").nth(1) {
-                            run.translate_time = seconds(wall);
-                        }
-                    } else if let Some(rest) = line.split("Expanded ").nth(1) {
-                        if line.contains("until last jump") {
-                            continue;
-                        }
-                        run.expansions = rest.split(' ').next().and_then(|n| n.parse().ok());
-                    } else if let Some(rest) = line.split("Plan cost: ").nth(1) {
-                        run.cost = rest.trim().parse().ok();
-                    }
-                }
-                if let Some(total) = search_total {
-                    run.search_time = total;
-                }
+                let parsed = parse_log(&log);
+                run.translate_time = parsed.translate;
+                run.heuristic_time = parsed.heuristic;
+                run.search_time = parsed.search;
+                run.expansions = parsed.expansions;
+                run.generated = parsed.generated;
+                run.cost = parsed.cost;
+                run.peak_memory_kb = parsed.peak_memory_kb;
                 if run.outcome == Outcome::Solved {
                     run.plan = plan
                         .lines()
@@ -166,6 +148,65 @@ impl FastDownward {
     }
 }
 
+/// What a Fast Downward log says about one run.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FdLog {
+    /// The translator's wall-clock time, from its last line "Done! [0.1s CPU, 0.1s
+    /// wall-clock]".
+    pub translate: Duration,
+    /// The search component's "Total time" minus its "Search time": reading the task
+    /// and building the heuristic (iPDB's hill climbing, LM-cut's relaxed task).
+    pub heuristic: Duration,
+    /// The search component's "Search time".
+    pub search: Duration,
+    /// "Expanded N state(s)." (not the count until the last jump).
+    pub expansions: Option<u64>,
+    /// "Generated N state(s)."
+    pub generated: Option<u64>,
+    /// "Plan cost: N".
+    pub cost: Option<u64>,
+    /// "Peak memory: N KB", the search component's peak resident set.
+    pub peak_memory_kb: Option<u64>,
+}
+
+/// Reads the times and counts out of a Fast Downward log (the driver's standard
+/// output: translator and search component one after the other). Lines it does not
+/// know are skipped; a missing line leaves its field at zero or `None`.
+pub fn parse_log(log: &str) -> FdLog {
+    let mut out = FdLog::default();
+    let mut search_total = None;
+    let mut search_time = None;
+    for line in log.lines() {
+        // The search component prefixes its lines with "[t=0.01s, 9788 KB] ".
+        let text = line.rsplit("] ").next().unwrap_or(line).trim();
+        if let Some(rest) = text.strip_prefix("Total time: ") {
+            search_total = Some(seconds(rest));
+        } else if let Some(rest) = text.strip_prefix("Search time: ") {
+            search_time = Some(seconds(rest));
+        } else if let Some(rest) = line.split("Done! [").nth(1) {
+            if let Some(wall) = rest.split(", ").nth(1) {
+                out.translate = seconds(wall);
+            }
+        } else if let Some(rest) = text.strip_prefix("Expanded ") {
+            if text.ends_with("state(s).") && !text.contains("until last jump") {
+                out.expansions = rest.split(' ').next().and_then(|n| n.parse().ok());
+            }
+        } else if let Some(rest) = text.strip_prefix("Generated ") {
+            // Not the translator's "Generated 24 rules.".
+            if text.ends_with("state(s).") && !text.contains("until last jump") {
+                out.generated = rest.split(' ').next().and_then(|n| n.parse().ok());
+            }
+        } else if let Some(rest) = text.strip_prefix("Plan cost: ") {
+            out.cost = rest.trim().parse().ok();
+        } else if let Some(rest) = text.strip_prefix("Peak memory: ") {
+            out.peak_memory_kb = rest.split(' ').next().and_then(|n| n.parse().ok());
+        }
+    }
+    out.search = search_time.unwrap_or(Duration::ZERO);
+    out.heuristic = search_total.map_or(Duration::ZERO, |t| t.saturating_sub(out.search));
+    out
+}
+
 /// `0.0123s` (or `0.0123s]`) in seconds.
 fn seconds(text: &str) -> Duration {
     let number: String = text
@@ -190,6 +231,51 @@ mod tests {
         assert_eq!(seconds("0.5s"), Duration::from_millis(500));
         assert_eq!(seconds("1.25s wall-clock]"), Duration::from_millis(1250));
         assert_eq!(seconds("garbage"), Duration::ZERO);
+    }
+
+    fn fixture(name: &str) -> String {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/fixtures/fast-downward")
+            .join(name);
+        std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+    }
+
+    /// Logs of Fast Downward 26.6 (`up-fast-downward` 1.0.0) planning goal 3 on the
+    /// widening library's full domain.
+    #[test]
+    fn the_four_times_come_from_a_real_ipdb_log() {
+        let log = parse_log(&fixture("astar-ipdb.log"));
+        assert_eq!(log.translate, Duration::from_secs_f64(0.031));
+        assert_eq!(log.search, Duration::from_secs_f64(0.000505));
+        // "Total time: 0.009395s" less the search time: reading the task and the climb.
+        assert_eq!(
+            log.heuristic,
+            Duration::from_secs_f64(0.009395) - Duration::from_secs_f64(0.000505)
+        );
+        assert_eq!(log.expansions, Some(7));
+        assert_eq!(log.generated, Some(60));
+        assert_eq!(log.cost, Some(240));
+        assert_eq!(log.peak_memory_kb, Some(10676));
+    }
+
+    #[test]
+    fn the_four_times_come_from_a_real_lmcut_log() {
+        let log = parse_log(&fixture("astar-lmcut.log"));
+        assert!(log.translate > Duration::ZERO);
+        assert!(log.search > Duration::ZERO);
+        assert!(log.heuristic > Duration::ZERO);
+        assert_eq!(log.cost, Some(240));
+        assert!(log.expansions.is_some_and(|e| e > 0));
+        assert!(log.peak_memory_kb.is_some());
+    }
+
+    #[test]
+    fn a_log_cut_short_leaves_what_it_did_not_say_empty() {
+        let log = parse_log("Done! [0.1s CPU, 0.2s wall-clock]\nGenerated 24 rules.\n");
+        assert_eq!(log.translate, Duration::from_millis(200));
+        assert_eq!(log.generated, None);
+        assert_eq!(log.search, Duration::ZERO);
+        assert_eq!(log.heuristic, Duration::ZERO);
     }
 
     #[test]

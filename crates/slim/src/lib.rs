@@ -12,8 +12,8 @@ mod run;
 
 use std::time::{Duration, Instant};
 
-pub use fast_downward::FastDownward;
-pub use run::{plan_task, translate_checked, Outcome, PlanRun, Translated};
+pub use fast_downward::{parse_log, FastDownward, FdLog};
+pub use run::{plan_task, translate_checked, MemoryProbe, Outcome, PlanRun, Translated};
 
 use learn::{domain, levels, DomainOptions, Library};
 
@@ -34,8 +34,23 @@ impl Backend {
         problem: &pddl::Problem,
         time_limit: Option<Duration>,
     ) -> PlanRun {
+        self.plan_measured(domain, problem, time_limit, None)
+    }
+
+    /// Like [`plan`](Self::plan), and for demoplan's planner the run's peak heap
+    /// through `memory` (Fast Downward reports its own peak).
+    pub fn plan_measured(
+        &self,
+        domain: &pddl::Domain,
+        problem: &pddl::Problem,
+        time_limit: Option<Duration>,
+        memory: Option<MemoryProbe>,
+    ) -> PlanRun {
         let start = Instant::now();
-        match self {
+        if let (Backend::Demoplan(_), Some(probe)) = (self, memory) {
+            (probe.reset)();
+        }
+        let mut run = match self {
             Backend::Demoplan(config) => match translate_checked(domain, problem) {
                 Translated::Task(task, translate_time) => {
                     let deadline = time_limit.map(|l| start + l);
@@ -52,7 +67,11 @@ impl Backend {
                 search,
                 time_limit,
             ),
+        };
+        if let (Backend::Demoplan(_), Some(probe)) = (self, memory) {
+            run.peak_memory_kb = Some((probe.peak)().div_ceil(1024));
         }
+        run
     }
 }
 

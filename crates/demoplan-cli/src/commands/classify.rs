@@ -11,12 +11,12 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use grounding::HandFacts;
-use segment::{ActivityTree, Feature, LabelMap, C45};
+use segment::{Activity, ActivityTree, Feature, LabelMap, UnknownLabels, C45};
 
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
-use crate::output::write_atomically;
+use crate::output::{self, write_atomically};
 
 /// The command line of `classify`.
 #[derive(Debug)]
@@ -27,7 +27,8 @@ pub struct ClassifyArgs {
     pub out: Option<PathBuf>,
     pub class: Option<String>,
     pub config: Option<PathBuf>,
-    /// A mapping file whose `[labels]` table maps ARFF labels to activities.
+    /// The mapping file (the import crate's), whose `[labels]` table maps ARFF labels
+    /// to activities.
     pub mapping: Option<PathBuf>,
 }
 
@@ -52,56 +53,66 @@ pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
     let config = demo_input::config(args.config.as_deref())?;
     let labels = demo_input::label_map(args.mapping.as_deref())?;
-    let mut out = String::new();
+    // Each file is printed as soon as it is classified: its frames are tallied as they
+    // are read, not kept.
+    let mut out = std::io::stdout().lock();
     for path in &args.files {
-        let cases = labelled(path, &config, &labels)?;
-        report(&mut out, path, &tree, &cases);
+        let mut agreement = Agreement::default();
+        let l = labelled(path, &config, &labels, &mut |hand, label| {
+            agreement.add(label, tree.classify(&hand));
+        })?;
+        let mut text = String::new();
+        report(&mut text, path, &l, &agreement);
+        output::print(&mut out, &text)?;
     }
-    print!("{out}");
     Ok(ExitCode::SUCCESS)
 }
 
-/// Frames of hands with labels (indices into `labels`, activity names).
+/// What a file's labelled frames are: the labels met (`each` gives indices into them),
+/// whether the hands' states say `handOpen`, and the frames left out.
 struct Labelled {
-    frames: Vec<(HandFacts, usize)>,
     labels: Vec<String>,
     hand_state: bool,
     /// Frames left out: their labels are not in the label map.
     left_out: usize,
 }
 
-/// The labelled frames of a file. An ARFF table's labels go through the label map;
-/// those it does not know are left out and named on standard error, once per file.
+/// The index of `name` in `labels`, added if it is new.
+fn label_index(labels: &mut Vec<String>, name: &str) -> usize {
+    match labels.iter().position(|l| l == name) {
+        Some(k) => k,
+        None => {
+            labels.push(name.to_string());
+            labels.len() - 1
+        }
+    }
+}
+
+/// The labelled frames of a file, each given to `each` as it is read (with its label's
+/// index). An ARFF table is read a row at a time and its labels go through the label
+/// map; those it does not know are left out and named on standard error, once per file.
 fn labelled(
     path: &Path,
     config: &grounding::GroundingConfig,
     map: &LabelMap,
+    each: &mut dyn FnMut(HandFacts, usize),
 ) -> Result<Labelled, Failure> {
     if demo_input::is_arff(path) {
-        let frames = demo_input::hand_frames(path)?;
-        let mapped = frames.activities(map);
-        if let Some(w) = mapped.warning() {
+        let table = demo_input::hand_table(path)?;
+        let mut unknown = UnknownLabels::default();
+        let mut labels: Vec<String> = Vec::new();
+        demo_input::arff_frames(path, &table, |f| {
+            if let Some(a) = unknown.activity(map, f) {
+                each(f.hand, label_index(&mut labels, a.name()));
+            }
+        })?;
+        if let Some(w) = unknown.warning() {
             demo_input::warn(path, &[w]);
         }
-        let mut labels: Vec<String> = Vec::new();
-        let mut cases = Vec::new();
-        for (f, a) in frames.frames.iter().zip(&mapped.activities) {
-            let Some(a) = a else { continue };
-            let name = a.name();
-            let k = match labels.iter().position(|l| l == name) {
-                Some(k) => k,
-                None => {
-                    labels.push(name.to_string());
-                    labels.len() - 1
-                }
-            };
-            cases.push((f.hand, k));
-        }
         return Ok(Labelled {
-            frames: cases,
             labels,
-            hand_state: frames.has_hand_state,
-            left_out: mapped.left_out(),
+            hand_state: table.has_hand_state(),
+            left_out: unknown.left_out(),
         });
     }
     let tree = ActivityTree::table_one();
@@ -115,41 +126,54 @@ fn labelled(
     )?;
     let truth = demo_input::read_truth(path, &segmented.header)?;
     let mut labels: Vec<String> = Vec::new();
-    let mut frames = Vec::new();
     for (index, hands) in grounded {
         let Some(names) = truth.get(index as usize) else {
             continue;
         };
         for (hand, name) in hands.iter().zip(names) {
-            let k = match labels.iter().position(|l| l == name) {
-                Some(k) => k,
-                None => {
-                    labels.push(name.clone());
-                    labels.len() - 1
-                }
-            };
-            frames.push((*hand, k));
+            each(*hand, label_index(&mut labels, name));
         }
     }
     Ok(Labelled {
-        frames,
         labels,
         hand_state: true,
         left_out: 0,
     })
 }
 
-fn report(out: &mut String, path: &Path, tree: &ActivityTree, cases: &Labelled) {
-    let (frames, labels) = (&cases.frames, &cases.labels);
-    let predicted: Vec<&str> = frames
+/// Per label (index), how many frames the tree classified as each activity.
+#[derive(Debug, Default)]
+struct Agreement {
+    counts: Vec<[u64; Activity::ALL.len()]>,
+}
+
+impl Agreement {
+    fn add(&mut self, label: usize, predicted: Activity) {
+        if self.counts.len() <= label {
+            self.counts.resize(label + 1, [0; Activity::ALL.len()]);
+        }
+        self.counts[label][predicted.index()] += 1;
+    }
+
+    fn count(&self, label: usize, predicted: Activity) -> u64 {
+        self.counts.get(label).map_or(0, |c| c[predicted.index()])
+    }
+}
+
+fn report(out: &mut String, path: &Path, cases: &Labelled, agreement: &Agreement) {
+    let labels = &cases.labels;
+    let frames: u64 = agreement.counts.iter().flatten().sum();
+    let agree: u64 = labels
         .iter()
-        .map(|(h, _)| tree.classify(h).name())
-        .collect();
-    let agree = frames
-        .iter()
-        .zip(&predicted)
-        .filter(|((_, l), p)| labels[*l] == **p)
-        .count();
+        .enumerate()
+        .map(|(k, l)| {
+            Activity::ALL
+                .iter()
+                .filter(|a| a.name() == l)
+                .map(|&a| agreement.count(k, a))
+                .sum::<u64>()
+        })
+        .sum();
     let left_out = match cases.left_out {
         0 => String::new(),
         n => format!("; {n} left out, their labels not in the label map"),
@@ -158,25 +182,19 @@ fn report(out: &mut String, path: &Path, tree: &ActivityTree, cases: &Labelled) 
         out,
         "{}: {} labelled hand frames, {} agree with the tree ({:.2}%){left_out}",
         path.display(),
-        frames.len(),
+        frames,
         agree,
-        100.0 * agree as f64 / frames.len().max(1) as f64
+        100.0 * agree as f64 / frames.max(1) as f64
     );
-    let columns: Vec<&str> = segment::Activity::ALL.iter().map(|a| a.name()).collect();
     let _ = write!(out, "{:<10}", "label");
-    for c in &columns {
-        let _ = write!(out, " {c:>7}");
+    for a in Activity::ALL {
+        let _ = write!(out, " {:>7}", a.name());
     }
     out.push('\n');
     for (k, label) in labels.iter().enumerate() {
         let _ = write!(out, "{label:<10}");
-        for c in &columns {
-            let n = frames
-                .iter()
-                .zip(&predicted)
-                .filter(|((_, l), p)| *l == k && *p == c)
-                .count();
-            let _ = write!(out, " {n:>7}");
+        for a in Activity::ALL {
+            let _ = write!(out, " {:>7}", agreement.count(k, a));
         }
         out.push('\n');
     }
@@ -187,11 +205,12 @@ fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
     // A nominal data set that is not a hand-state table: learn it as it is.
     if let [path] = args.files.as_slice() {
         if demo_input::is_arff(path) {
-            let (table, text) = demo_input::arff_table(path)?;
-            if !table.is_hand_state() {
+            let hand_state = segment::is_hand_state(demo_input::arff_reader(path)?.attributes());
+            if !hand_state {
+                let table = demo_input::arff_table(path)?;
                 let (data, warnings) = table
                     .dataset(args.class.as_deref())
-                    .map_err(|e| demo_input::arff_failure(path, &text, &e))?;
+                    .map_err(|e| demo_input::arff_failure(path, &e))?;
                 demo_input::warn(path, &warnings);
                 let tree = learner.learn(&data);
                 let right = data
@@ -214,19 +233,16 @@ fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
     let mut labels: Vec<String> = Vec::new();
     let mut cases: Vec<(HandFacts, usize)> = Vec::new();
     let mut hand_state = true;
+    // C4.5 needs every case at once: only these (a hand state and a label index each)
+    // are kept, not the files' rows.
     for path in &args.files {
-        let l = labelled(path, &config, &map)?;
+        let mut file_cases = Vec::new();
+        let l = labelled(path, &config, &map, &mut |hand, k| {
+            file_cases.push((hand, k))
+        })?;
         hand_state &= l.hand_state;
-        for (hand, k) in l.frames {
-            let name = &l.labels[k];
-            let k = match labels.iter().position(|x| x == name) {
-                Some(k) => k,
-                None => {
-                    labels.push(name.clone());
-                    labels.len() - 1
-                }
-            };
-            cases.push((hand, k));
+        for (hand, k) in file_cases {
+            cases.push((hand, label_index(&mut labels, &l.labels[k])));
         }
     }
     if cases.is_empty() {

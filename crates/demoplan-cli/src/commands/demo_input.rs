@@ -3,13 +3,17 @@
 //! grounding and segmentation over a recording.
 
 use std::fmt::Write as _;
+use std::fs::File;
+use std::io::BufReader;
 use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
 use grounding::{GroundedFrame, Grounder, GroundingConfig};
 use miette::NamedSource;
 use recording::{Frame, Header};
-use segment::{ActivityTree, DecisionTree, HandFrames, LabelMap, Segment, Segmenter};
+use segment::{
+    ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame, Segment, Segmenter,
+};
 
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
@@ -161,106 +165,143 @@ pub fn is_arff(path: &Path) -> bool {
     segment::is_arff_text(&String::from_utf8_lossy(&start))
 }
 
-/// The label map: the defaults, with the `[labels]` table of a mapping file on top
-/// (`LABEL = "Activity"`). Any other key is an input error, as is an activity that does
-/// not exist, each with the file's line and the key.
+/// The label map: the defaults, with the `[labels]` table of the mapping file on top
+/// (`LABEL = "Activity"`). The mapping file is the import crate's, the one every command
+/// takes with `--mapping` (`docs/import.md`): a malformed file or an unknown key is an
+/// input error naming its line and key, as is an activity that does not exist.
 pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
-    #[derive(serde::Deserialize)]
-    #[serde(deny_unknown_fields)]
-    struct MappingFile {
-        #[serde(default)]
-        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
-    }
     let Some(path) = path else {
         return Ok(LabelMap::default());
     };
-    let text = input::read_text(path)?;
-    let at = |offset: usize| {
-        let line = text[..offset.min(text.len())].matches('\n').count() + 1;
-        let column = offset - line_start(&text, line).unwrap_or(0) + 1;
-        (line, column)
-    };
-    let file: MappingFile = toml::from_str(&text).map_err(|e| {
-        let (line, column) = e.span().map_or((0, 0), |s| at(s.start));
-        let key = text
-            .lines()
-            .nth(line.saturating_sub(1))
-            .and_then(|l| l.split('=').next())
-            .map(|k| k.trim().trim_matches(['[', ']']).trim().to_string())
-            .unwrap_or_default();
+    let mapping = recording_input::mapping(Some(path), import::Format::Arff)?;
+    LabelMap::with_overrides(
+        mapping
+            .labels
+            .iter()
+            .map(|(label, activity)| (label.as_str(), activity.as_str())),
+    )
+    .map_err(|e| {
+        // The mapping keeps no positions: find the label's value in the file again.
+        let text = std::fs::read_to_string(path).unwrap_or_default();
+        let (line, column) = label_position(&text, &e.label).unwrap_or((0, 0));
         text_failure(
             path,
             &text,
-            "demoplan::mapping",
+            "import::mapping",
             line,
             column,
-            &key,
-            e.message().trim(),
+            &format!("labels.{}", e.label),
+            &e.to_string(),
+        )
+    })
+}
+
+/// Where the value of `labels.LABEL` starts in a mapping file (1-based line and column).
+fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
+    #[derive(serde::Deserialize)]
+    struct Labels {
+        #[serde(default)]
+        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
+    }
+    let file: Labels = toml::from_str(text).ok()?;
+    let offset = file.labels.get(label)?.span().start;
+    let line = text[..offset.min(text.len())].matches('\n').count() + 1;
+    Some((line, offset - line_start(text, line)? + 1))
+}
+
+/// An ARFF file opened for reading a row at a time: its header read and checked.
+pub fn arff_reader(path: &Path) -> Result<ArffReader<BufReader<File>>, Failure> {
+    let file = File::open(path).map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!("cannot read {}: {e}", path.display()),
         )
     })?;
-    let mut map = LabelMap::default();
-    for (label, activity) in &file.labels {
-        map.set(label, activity.get_ref()).map_err(|e| {
-            let (line, column) = at(activity.span().start);
-            text_failure(
-                path,
-                &text,
-                "demoplan::mapping",
-                line,
-                column,
-                &format!("labels.{label}"),
-                &e.to_string(),
-            )
-        })?;
+    ArffReader::new(BufReader::new(file)).map_err(|e| arff_failure(path, &e))
+}
+
+/// A whole ARFF table in memory, for what needs every row at once (C4.5 on a data set
+/// that is not a hand-state table).
+pub fn arff_table(path: &Path) -> Result<segment::ArffTable, Failure> {
+    let mut reader = arff_reader(path)?;
+    let rows = reader
+        .by_ref()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| arff_failure(path, &e))?;
+    Ok(segment::ArffTable {
+        relation: reader.relation().to_string(),
+        attributes: reader.attributes().to_vec(),
+        rows,
+    })
+}
+
+/// The failure for an ARFF error, shown on its line of the file. The file is read again
+/// for that: tables are read a row at a time and no text is kept. A file that cannot be
+/// read again (or is not UTF-8 text) gets the message without its line shown.
+pub fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
+    match std::fs::read_to_string(path) {
+        Ok(text) => text_failure(
+            path,
+            &text,
+            "segment::arff",
+            e.line,
+            e.column,
+            &e.field,
+            &e.message,
+        ),
+        Err(_) => Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!(
+                "{}:{}: field `{}`: {}",
+                path.display(),
+                e.line,
+                e.field,
+                e.message
+            ),
+        ),
     }
-    Ok(map)
 }
 
-/// An ARFF table, read and checked; its text is returned for later errors.
-pub fn arff_table(path: &Path) -> Result<(segment::ArffTable, String), Failure> {
-    let text = input::read_text(path)?;
-    let table = segment::read_arff(&text).map_err(|e| arff_failure(path, &text, &e))?;
-    Ok((table, text))
+/// An ARFF hand-state table after its first pass (objects, labels); its warnings are
+/// printed on standard error. [`arff_frames`] is the second pass.
+pub fn hand_table(path: &Path) -> Result<HandTable, Failure> {
+    let reader = arff_reader(path)?;
+    let (relation, attributes) = (reader.relation().to_string(), reader.attributes().to_vec());
+    let table = HandTable::scan(&relation, &attributes, reader, ARFF_FRAME_RATE)
+        .map_err(|e| arff_failure(path, &e))?;
+    warn(path, &table.warnings);
+    Ok(table)
 }
 
-/// The failure for an ARFF error.
-pub fn arff_failure(path: &Path, text: &str, e: &segment::ArffError) -> Failure {
-    text_failure(
-        path,
-        text,
-        "segment::arff",
-        e.line,
-        e.column,
-        &e.field,
-        &e.message,
-    )
-}
-
-/// An ARFF hand-state table as frames; its warnings are printed on standard error.
-pub fn hand_frames(path: &Path) -> Result<HandFrames, Failure> {
-    let (table, text) = arff_table(path)?;
-    let frames = table
-        .hand_frames(ARFF_FRAME_RATE)
-        .map_err(|e| arff_failure(path, &text, &e))?;
-    warn(path, &frames.warnings);
-    Ok(frames)
+/// The second pass over a hand-state table: `each` sees every frame, in order.
+pub fn arff_frames(
+    path: &Path,
+    table: &HandTable,
+    mut each: impl FnMut(&LabelledFrame),
+) -> Result<(), Failure> {
+    for frame in table.frames(arff_reader(path)?) {
+        each(&frame.map_err(|e| arff_failure(path, &e))?);
+    }
+    Ok(())
 }
 
 /// An ARFF hand-state table segmented: its hand's own facts are the states (it has no
-/// geometry, so no grounding).
+/// geometry, so no grounding). The file is read twice, a row at a time.
 pub fn segment_arff(
     path: &Path,
     tree: &ActivityTree,
     min_duration: f64,
 ) -> Result<Segmented, Failure> {
-    let frames = hand_frames(path)?;
-    let (space, segments) = frames.segments(tree, min_duration);
+    let table = hand_table(path)?;
+    let segmented = table
+        .segments(table.frames(arff_reader(path)?), tree, min_duration)
+        .map_err(|e| arff_failure(path, &e))?;
     Ok(Segmented {
-        space,
-        frames: frames.frames.len() as u64,
-        duration: frames.duration(),
-        header: frames.header,
-        segments,
+        space: segmented.space,
+        frames: segmented.frames,
+        duration: segmented.duration,
+        header: table.header,
+        segments: segmented.segments,
     })
 }
 

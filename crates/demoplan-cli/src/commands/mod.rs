@@ -13,6 +13,7 @@ pub mod reproduce;
 pub mod segment;
 pub mod simulate;
 pub mod solve;
+pub mod study;
 pub mod timeline;
 pub mod translate;
 pub mod validate;

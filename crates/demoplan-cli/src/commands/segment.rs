@@ -13,6 +13,7 @@ use serde_json::{json, Value};
 use crate::commands::demo_input::{self, Segmented};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
+use crate::output;
 
 /// The command line of `segment`.
 #[derive(Debug)]
@@ -60,25 +61,12 @@ pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
         write_out(&mut out, end)?;
     }
     out.flush()
-        .map_err(|e| output_failure(&e))
+        .map_err(|e| output::stdout_failure(&e))
         .map(|()| ExitCode::SUCCESS)
 }
 
-fn output_failure(e: &std::io::Error) -> Failure {
-    if e.kind() == std::io::ErrorKind::BrokenPipe {
-        // The reader stopped early (`| head`): no error (see main.rs).
-        Failure::plain(ExitCode::OUTPUT_CLOSED, String::new())
-    } else {
-        Failure::plain(
-            ExitCode::CRITICAL_ERROR,
-            format!("cannot write to standard output: {e}"),
-        )
-    }
-}
-
 fn write_out(out: &mut impl Write, text: &str) -> Result<(), Failure> {
-    out.write_all(text.as_bytes())
-        .map_err(|e| output_failure(&e))
+    output::print(out, text)
 }
 
 /// Writes `text` (pretty JSON, no raw newlines inside strings) indented by `indent`

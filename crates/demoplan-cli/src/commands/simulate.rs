@@ -101,6 +101,12 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
                 "dominant_hand": p.dominant.name(),
                 "mean_speed": (p.mean_speed * 1000.0).round() / 1000.0,
                 "rest_after_grasp": (p.rest_after_grasp * 1000.0).round() / 1000.0,
+                "hover": (p.hover * 1000.0).round() / 1000.0,
+                "return_between": (p.return_between * 1000.0).round() / 1000.0,
+                "abort": (p.abort * 1000.0).round() / 1000.0,
+                "regrasp": (p.regrasp * 1000.0).round() / 1000.0,
+                "adjust": (p.adjust * 1000.0).round() / 1000.0,
+                "fidget_rate": (p.fidget_rate * 1000.0).round() / 1000.0,
             })
         })
         .collect();

@@ -7,6 +7,7 @@
 //! the header declares only `{None, Something}`, `NONE` in any case, activity labels
 //! outside the declared set) it says in [`ArffWarning`]s.
 
+use std::borrow::Borrow;
 use std::collections::BTreeSet;
 
 use grounding::{Fact, FactSpace, HandFacts, Predicate, State};
@@ -19,7 +20,7 @@ use crate::tree::{Activity, ActivityTree};
 
 mod reader;
 use crate::tree::{Attribute, Feature};
-pub use reader::{is_arff_text, read_arff, WEKA_DUMMY_STRING};
+pub use reader::{is_arff_text, read_arff, ArffReader, WEKA_DUMMY_STRING};
 
 /// The type of an ARFF attribute.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -242,24 +243,73 @@ const HAND_STATE: &[&str] = &["HandState", "HandOpen"];
 const ACTIVITY: &[&str] = &["Activity", "Class", "Label"];
 const TIME: &[&str] = &["Time", "t", "Timestamp"];
 
-impl ArffTable {
-    fn find_any(&self, names: &[&str]) -> Option<usize> {
-        names.iter().find_map(|n| self.attribute(n))
-    }
+/// The position of an attribute, by any of `names` ignoring case.
+fn find_any(attributes: &[ArffAttribute], names: &[&str]) -> Option<usize> {
+    names.iter().find_map(|n| {
+        attributes
+            .iter()
+            .position(|a| a.name.eq_ignore_ascii_case(n))
+    })
+}
 
+/// `None` or `nil`, in any case: no object.
+fn is_none(v: &str) -> bool {
+    v.eq_ignore_ascii_case("none") || v.eq_ignore_ascii_case("nil")
+}
+
+/// Whether attributes make a hand-state table (a hand's motion, the object acted on, the
+/// object in hand).
+pub fn is_hand_state(attributes: &[ArffAttribute]) -> bool {
+    find_any(attributes, HAND).is_some()
+        && find_any(attributes, ACTED_ON).is_some()
+        && find_any(attributes, IN_HAND).is_some()
+}
+
+impl ArffTable {
     /// Whether the table has the hand-state columns (a hand's motion, the object acted
     /// on, the object in hand).
     pub fn is_hand_state(&self) -> bool {
-        self.find_any(HAND).is_some()
-            && self.find_any(ACTED_ON).is_some()
-            && self.find_any(IN_HAND).is_some()
+        is_hand_state(&self.attributes)
     }
 
     /// Reads the table as frames of one hand. Rows without a time attribute are
     /// `1 / frame_rate` apart.
     pub fn hand_frames(&self, frame_rate: f64) -> Result<HandFrames, ArffError> {
+        let table = HandTable::scan(
+            &self.relation,
+            &self.attributes,
+            self.rows.iter().map(Ok),
+            frame_rate,
+        )?;
+        let frames = table
+            .frames(self.rows.iter().map(Ok))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(HandFrames {
+            header: table.header,
+            frames,
+            labels: table.labels,
+            has_hand_state: table.columns.state.is_some(),
+            warnings: table.warnings,
+        })
+    }
+}
+
+/// Where a hand-state table keeps its columns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct HandColumns {
+    hand: usize,
+    acted: usize,
+    held: usize,
+    state: Option<usize>,
+    activity: Option<usize>,
+    /// A numeric time attribute.
+    time: Option<usize>,
+}
+
+impl HandColumns {
+    fn find(attributes: &[ArffAttribute]) -> Result<HandColumns, ArffError> {
         let need = |names: &[&str]| {
-            self.find_any(names).ok_or_else(|| {
+            find_any(attributes, names).ok_or_else(|| {
                 error(
                     0,
                     0,
@@ -268,70 +318,156 @@ impl ArffTable {
                 )
             })
         };
-        let hand = need(HAND)?;
-        let acted = need(ACTED_ON)?;
-        let held = need(IN_HAND)?;
-        let state = self.find_any(HAND_STATE);
-        let activity = self.find_any(ACTIVITY);
-        let time = self
-            .find_any(TIME)
-            .filter(|&t| self.attributes[t].kind == ArffKind::Numeric);
-        let mut warnings = Vec::new();
-        // Objects: every value of the object columns that is not None.
-        let mut objects = BTreeSet::new();
-        let is_none = |v: &str| v.eq_ignore_ascii_case("none") || v.eq_ignore_ascii_case("nil");
-        for col in [acted, held] {
-            let declared = match &self.attributes[col].kind {
+        Ok(HandColumns {
+            hand: need(HAND)?,
+            acted: need(ACTED_ON)?,
+            held: need(IN_HAND)?,
+            state: find_any(attributes, HAND_STATE),
+            activity: find_any(attributes, ACTIVITY),
+            time: find_any(attributes, TIME).filter(|&t| attributes[t].kind == ArffKind::Numeric),
+        })
+    }
+}
+
+/// What a first pass sees of an object column: the names the header does not declare
+/// and the first odd spelling of None.
+#[derive(Debug, Default)]
+struct ObjectColumn {
+    declared: Vec<String>,
+    names_met: Vec<String>,
+    first_line: usize,
+    odd_none: Option<(usize, String)>,
+}
+
+/// A hand-state table after a first pass over its rows: the scene (the hand and every
+/// object named), the labels and the warnings, all of which a frame needs before it can
+/// be read (an object's entity is its place among all the table's object names). A
+/// second pass, [`HandTable::frames`], reads the rows as frames one at a time, so that a
+/// table of any length is read in memory bounded by its longest line and the number of
+/// distinct names in it: read the file twice with an [`ArffReader`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct HandTable {
+    /// A header for the frames: the hand (`hand`), then every object named, sorted.
+    pub header: Header,
+    /// The activity labels: those declared, then others met, in order of appearance.
+    pub labels: Vec<String>,
+    /// What was accepted beyond the header.
+    pub warnings: Vec<ArffWarning>,
+    attributes: Vec<ArffAttribute>,
+    columns: HandColumns,
+    /// The object names, sorted: entity `i + 1` is `objects[i]`.
+    objects: Vec<String>,
+}
+
+impl HandTable {
+    /// The first pass: reads `rows` of a table with these attributes for its objects
+    /// and labels. Rows without a time attribute are `1 / frame_rate` apart.
+    pub fn scan<R: Borrow<ArffRow>>(
+        relation: &str,
+        attributes: &[ArffAttribute],
+        rows: impl IntoIterator<Item = Result<R, ArffError>>,
+        frame_rate: f64,
+    ) -> Result<HandTable, ArffError> {
+        let columns = match HandColumns::find(attributes) {
+            Ok(columns) => columns,
+            Err(e) => {
+                // A row that does not read says more than a missing column, and is what
+                // `read_arff` then `hand_frames` say first.
+                for row in rows {
+                    row?;
+                }
+                return Err(e);
+            }
+        };
+        let mut object_columns = [columns.acted, columns.held].map(|c| ObjectColumn {
+            declared: match &attributes[c].kind {
                 ArffKind::Nominal(v) => v.clone(),
                 _ => Vec::new(),
-            };
-            let only_placeholder = !declared.is_empty()
-                && declared
-                    .iter()
-                    .all(|v| is_none(v) || v.eq_ignore_ascii_case("something"));
-            let mut names_met: Vec<&str> = Vec::new();
-            let mut first_line = 0;
-            let mut odd_none: Option<(usize, &str)> = None;
-            for row in &self.rows {
+            },
+            ..ObjectColumn::default()
+        });
+        let mut objects = BTreeSet::new();
+        let mut labels: Vec<String> = match columns.activity.map(|a| &attributes[a].kind) {
+            Some(ArffKind::Nominal(v)) => v.clone(),
+            _ => Vec::new(),
+        };
+        let declared_labels = labels.len();
+        let mut first_extra = 0;
+        for row in rows {
+            let row = row?;
+            let row = row.borrow();
+            for (seen, col) in object_columns.iter_mut().zip([columns.acted, columns.held]) {
                 let Some(v) = row.values[col].as_deref() else {
                     continue;
                 };
+                let declared = seen.declared.iter().any(|d| d == v);
                 if is_none(v) {
-                    if !declared.iter().any(|d| d == v) && odd_none.is_none() {
-                        odd_none = Some((row.line, v));
+                    if !declared && seen.odd_none.is_none() {
+                        seen.odd_none = Some((row.line, v.to_string()));
                     }
                     continue;
                 }
-                objects.insert(v.to_string());
-                if !declared.iter().any(|d| d == v) && !names_met.contains(&v) {
-                    if names_met.is_empty() {
-                        first_line = row.line;
+                if !objects.contains(v) {
+                    objects.insert(v.to_string());
+                }
+                if !declared && !seen.names_met.iter().any(|n| n == v) {
+                    if seen.names_met.is_empty() {
+                        seen.first_line = row.line;
                     }
-                    names_met.push(v);
+                    seen.names_met.push(v.to_string());
                 }
             }
-            let name = &self.attributes[col].name;
-            if !names_met.is_empty() {
+            if let Some(l) = columns.activity.and_then(|a| row.values[a].as_deref()) {
+                if !labels.iter().any(|x| x == l) {
+                    if labels.len() == declared_labels {
+                        first_extra = row.line;
+                    }
+                    labels.push(l.to_string());
+                }
+            }
+        }
+        let mut warnings = Vec::new();
+        for (seen, col) in object_columns.iter().zip([columns.acted, columns.held]) {
+            let name = &attributes[col].name;
+            if !seen.names_met.is_empty() {
+                let only_placeholder = !seen.declared.is_empty()
+                    && seen
+                        .declared
+                        .iter()
+                        .all(|v| is_none(v) || v.eq_ignore_ascii_case("something"));
                 let why = if only_placeholder {
                     "the header declares only {None, Something}"
                 } else {
                     "the header does not declare them"
                 };
                 warnings.push(ArffWarning {
-                    line: first_line,
+                    line: seen.first_line,
                     message: format!(
                         "`{name}`: accepted object names ({}) where {why}",
-                        names_met.join(", ")
+                        seen.names_met.join(", ")
                     ),
                 });
             }
-            if let Some((line, v)) = odd_none {
+            if let Some((line, v)) = &seen.odd_none {
                 warnings.push(ArffWarning {
-                    line,
+                    line: *line,
                     message: format!("`{name}`: read `{v}` as None"),
                 });
             }
         }
+        if labels.len() > declared_labels {
+            let name = columns
+                .activity
+                .map_or("Activity", |a| attributes[a].name.as_str());
+            warnings.push(ArffWarning {
+                line: first_extra,
+                message: format!(
+                    "`{name}`: accepted labels the header does not declare: {}",
+                    labels[declared_labels..].join(", ")
+                ),
+            });
+        }
+        warnings.sort_by_key(|w| w.line);
         let objects: Vec<String> = objects.into_iter().collect();
         let mut entities = vec![Entity {
             name: "hand".into(),
@@ -345,125 +481,207 @@ impl ArffTable {
             size: Vec3::new(0.05, 0.05, 0.05),
             fixed: None,
         }));
-        let object_id = |v: Option<&str>| -> Option<EntityId> {
-            let v = v?;
-            if is_none(v) {
-                return None;
-            }
-            objects
-                .binary_search_by(|o| o.as_str().cmp(v))
-                .ok()
-                .map(|i| EntityId(i as u32 + 1))
-        };
-        let mut labels: Vec<String> = match activity.map(|a| &self.attributes[a].kind) {
-            Some(ArffKind::Nominal(v)) => v.clone(),
-            _ => Vec::new(),
-        };
-        let declared_labels = labels.len();
-        let mut first_extra = 0;
-        let mut frames = Vec::with_capacity(self.rows.len());
-        for (n, row) in self.rows.iter().enumerate() {
-            let field = |c: usize| self.attributes[c].name.as_str();
-            let moving = match row.values[hand].as_deref() {
-                Some(v) if v.eq_ignore_ascii_case("move") || v.eq_ignore_ascii_case("tooluse") => {
-                    true
-                }
-                Some(v) if v.eq_ignore_ascii_case("notmove") => false,
-                Some(v) => {
-                    return Err(error(
-                        row.line,
-                        0,
-                        field(hand),
-                        format!("`{v}` is not a hand motion (NotMove, Move, ToolUse)"),
-                    ))
-                }
-                None => {
-                    return Err(error(
-                        row.line,
-                        0,
-                        field(hand),
-                        "the hand's motion is unknown (`?`)",
-                    ))
-                }
-            };
-            let open = match state.and_then(|s| row.values[s].as_deref()) {
-                None => None,
-                Some(v) if v.eq_ignore_ascii_case("open") => Some(true),
-                Some(v) if v.eq_ignore_ascii_case("close") || v.eq_ignore_ascii_case("closed") => {
-                    Some(false)
-                }
-                Some(v) => {
-                    let s = state.map_or("HandState", field);
-                    return Err(error(
-                        row.line,
-                        0,
-                        s,
-                        format!("`{v}` is not a hand state (Open, Close)"),
-                    ));
-                }
-            };
-            let label = activity.and_then(|a| row.values[a].clone());
-            if let Some(l) = &label {
-                if !labels.contains(l) {
-                    if labels.len() == declared_labels {
-                        first_extra = row.line;
-                    }
-                    labels.push(l.clone());
-                }
-            }
-            let t = match time.and_then(|t| row.values[t].as_deref()) {
-                Some(v) => v.parse::<f64>().unwrap_or(0.0),
-                None => n as f64 / frame_rate,
-            };
-            if let Some(previous) = frames.last().map(|f: &LabelledFrame| f.time) {
-                if t <= previous {
-                    let tf = time.map_or("Time", field);
-                    return Err(error(
-                        row.line,
-                        0,
-                        tf,
-                        format!("time {t} is not after the previous row's {previous}"),
-                    ));
-                }
-            }
-            frames.push(LabelledFrame {
-                line: row.line,
-                time: t,
-                hand: HandFacts {
-                    moving,
-                    open,
-                    acted_on: object_id(row.values[acted].as_deref()),
-                    in_hand: object_id(row.values[held].as_deref()),
-                },
-                label,
-            });
-        }
-        if labels.len() > declared_labels {
-            let name = activity.map_or("Activity", |a| self.attributes[a].name.as_str());
-            warnings.push(ArffWarning {
-                line: first_extra,
-                message: format!(
-                    "`{name}`: accepted labels the header does not declare: {}",
-                    labels[declared_labels..].join(", ")
-                ),
-            });
-        }
-        warnings.sort_by_key(|w| w.line);
-        Ok(HandFrames {
+        Ok(HandTable {
             header: Header {
-                id: self.relation.clone(),
+                id: relation.to_string(),
                 participant: String::new(),
                 task: String::new(),
                 frame_rate,
                 entities,
                 meta: Default::default(),
             },
-            frames,
             labels,
-            has_hand_state: state.is_some(),
             warnings,
+            attributes: attributes.to_vec(),
+            columns,
+            objects,
         })
     }
+
+    /// Whether the table has `HandState` (`handOpen`).
+    pub fn has_hand_state(&self) -> bool {
+        self.columns.state.is_some()
+    }
+
+    /// The second pass: the same rows as [`HandTable::scan`] read, as frames, one at a
+    /// time. A row that is not a hand state (an unknown motion or hand state, time not
+    /// after the previous row's) ends it with an error at its line.
+    pub fn frames<R, I>(&self, rows: I) -> HandTableFrames<'_, I::IntoIter>
+    where
+        R: Borrow<ArffRow>,
+        I: IntoIterator<Item = Result<R, ArffError>>,
+    {
+        HandTableFrames {
+            table: self,
+            rows: rows.into_iter(),
+            n: 0,
+            previous: None,
+            done: false,
+        }
+    }
+
+    /// The fact space of the table's scene: one hand and the objects it names.
+    pub fn fact_space(&self) -> FactSpace {
+        FactSpace::new(&self.header)
+    }
+
+    /// Segments the table's frames (the second pass, [`HandTable::frames`]) with `tree`
+    /// and the minimum duration (s): [`HandFrames::segments`] for a table read row by
+    /// row. The first error ends it.
+    pub fn segments(
+        &self,
+        frames: impl IntoIterator<Item = Result<LabelledFrame, ArffError>>,
+        tree: &ActivityTree,
+        min_duration: f64,
+    ) -> Result<TableSegments, ArffError> {
+        let space = self.fact_space();
+        let mut segmenter = Segmenter::new(&[HAND_ID], tree.clone(), min_duration);
+        let (mut count, mut first, mut last) = (0, None, 0.0);
+        for frame in frames {
+            let frame = frame?;
+            count += 1;
+            first.get_or_insert(frame.time);
+            last = frame.time;
+            segmenter.push(frame.time, &[frame.hand], &hand_state(&space, &frame));
+        }
+        Ok(TableSegments {
+            space,
+            segments: segmenter.finish(),
+            frames: count,
+            duration: last - first.unwrap_or(last),
+        })
+    }
+
+    fn object_id(&self, v: Option<&str>) -> Option<EntityId> {
+        let v = v?;
+        if is_none(v) {
+            return None;
+        }
+        self.objects
+            .binary_search_by(|o| o.as_str().cmp(v))
+            .ok()
+            .map(|i| EntityId(i as u32 + 1))
+    }
+
+    /// Row `n` (0-based) as a frame; `previous` is the time of the frame before.
+    fn frame(
+        &self,
+        row: &ArffRow,
+        n: usize,
+        previous: Option<f64>,
+    ) -> Result<LabelledFrame, ArffError> {
+        let c = &self.columns;
+        let field = |c: usize| self.attributes[c].name.as_str();
+        let moving = match row.values[c.hand].as_deref() {
+            Some(v) if v.eq_ignore_ascii_case("move") || v.eq_ignore_ascii_case("tooluse") => true,
+            Some(v) if v.eq_ignore_ascii_case("notmove") => false,
+            Some(v) => {
+                return Err(error(
+                    row.line,
+                    0,
+                    field(c.hand),
+                    format!("`{v}` is not a hand motion (NotMove, Move, ToolUse)"),
+                ))
+            }
+            None => {
+                return Err(error(
+                    row.line,
+                    0,
+                    field(c.hand),
+                    "the hand's motion is unknown (`?`)",
+                ))
+            }
+        };
+        let open = match c.state.and_then(|s| row.values[s].as_deref()) {
+            None => None,
+            Some(v) if v.eq_ignore_ascii_case("open") => Some(true),
+            Some(v) if v.eq_ignore_ascii_case("close") || v.eq_ignore_ascii_case("closed") => {
+                Some(false)
+            }
+            Some(v) => {
+                let s = c.state.map_or("HandState", field);
+                return Err(error(
+                    row.line,
+                    0,
+                    s,
+                    format!("`{v}` is not a hand state (Open, Close)"),
+                ));
+            }
+        };
+        let t = match c.time.and_then(|t| row.values[t].as_deref()) {
+            Some(v) => v.parse::<f64>().unwrap_or(0.0),
+            None => n as f64 / self.header.frame_rate,
+        };
+        if let Some(previous) = previous {
+            if t <= previous {
+                let tf = c.time.map_or("Time", field);
+                return Err(error(
+                    row.line,
+                    0,
+                    tf,
+                    format!("time {t} is not after the previous row's {previous}"),
+                ));
+            }
+        }
+        Ok(LabelledFrame {
+            line: row.line,
+            time: t,
+            hand: HandFacts {
+                moving,
+                open,
+                acted_on: self.object_id(row.values[c.acted].as_deref()),
+                in_hand: self.object_id(row.values[c.held].as_deref()),
+            },
+            label: c.activity.and_then(|a| row.values[a].clone()),
+        })
+    }
+}
+
+/// The frames of a [`HandTable`], one per row: see [`HandTable::frames`].
+#[derive(Debug)]
+pub struct HandTableFrames<'a, I> {
+    table: &'a HandTable,
+    rows: I,
+    n: usize,
+    previous: Option<f64>,
+    done: bool,
+}
+
+impl<R: Borrow<ArffRow>, I: Iterator<Item = Result<R, ArffError>>> Iterator
+    for HandTableFrames<'_, I>
+{
+    type Item = Result<LabelledFrame, ArffError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        let frame = match self.rows.next()? {
+            Ok(row) => self.table.frame(row.borrow(), self.n, self.previous),
+            Err(e) => Err(e),
+        };
+        match &frame {
+            Ok(f) => {
+                self.n += 1;
+                self.previous = Some(f.time);
+            }
+            Err(_) => self.done = true,
+        }
+        Some(frame)
+    }
+}
+
+/// A hand-state table segmented: [`HandTable::segments`].
+#[derive(Debug, Clone)]
+pub struct TableSegments {
+    /// The fact space the segments' states belong to.
+    pub space: FactSpace,
+    /// The segments, sorted by start.
+    pub segments: Vec<Segment>,
+    /// The number of frames (rows).
+    pub frames: u64,
+    /// Seconds from the first frame to the last.
+    pub duration: f64,
 }
 
 /// The activities of a table's labels, by a [`LabelMap`].
@@ -479,56 +697,87 @@ pub struct FrameActivities {
 impl FrameActivities {
     /// Frames whose label the map does not know.
     pub fn left_out(&self) -> usize {
-        self.unknown.iter().map(|u| u.frames).sum()
+        left_out(&self.unknown)
     }
 
     /// One warning naming every unknown label with its count, if there is one.
     pub fn warning(&self) -> Option<ArffWarning> {
-        let first = self.unknown.first()?;
-        let list: Vec<String> = self
-            .unknown
-            .iter()
-            .map(|u| {
-                let s = if u.frames == 1 { "" } else { "s" };
-                format!("{} ({} frame{s})", u.label, u.frames)
-            })
-            .collect();
-        Some(ArffWarning {
-            line: first.line,
-            message: format!(
-                "labels the label map does not know, left out: {}",
-                list.join(", ")
-            ),
-        })
+        unknown_warning(&self.unknown)
     }
+}
+
+/// The labels a [`LabelMap`] does not know, counted frame by frame: what
+/// [`FrameActivities`] says of a whole table, for frames read one at a time.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct UnknownLabels {
+    /// The labels the map does not know, in order of first appearance, with counts.
+    pub labels: Vec<UnknownLabel>,
+}
+
+impl UnknownLabels {
+    /// The activity of a frame's label by `map`; `None` without a label, or when the
+    /// map does not know it (then it is counted).
+    pub fn activity(&mut self, map: &LabelMap, frame: &LabelledFrame) -> Option<Activity> {
+        let label = frame.label.as_deref()?;
+        let activity = map.activity(label);
+        if activity.is_none() {
+            match self.labels.iter_mut().find(|u| u.label == label) {
+                Some(u) => u.frames += 1,
+                None => self.labels.push(UnknownLabel {
+                    label: label.to_string(),
+                    frames: 1,
+                    line: frame.line,
+                }),
+            }
+        }
+        activity
+    }
+
+    /// Frames whose label the map does not know.
+    pub fn left_out(&self) -> usize {
+        left_out(&self.labels)
+    }
+
+    /// One warning naming every unknown label with its count, if there is one.
+    pub fn warning(&self) -> Option<ArffWarning> {
+        unknown_warning(&self.labels)
+    }
+}
+
+fn left_out(unknown: &[UnknownLabel]) -> usize {
+    unknown.iter().map(|u| u.frames).sum()
+}
+
+fn unknown_warning(unknown: &[UnknownLabel]) -> Option<ArffWarning> {
+    let first = unknown.first()?;
+    let list: Vec<String> = unknown
+        .iter()
+        .map(|u| {
+            let s = if u.frames == 1 { "" } else { "s" };
+            format!("{} ({} frame{s})", u.label, u.frames)
+        })
+        .collect();
+    Some(ArffWarning {
+        line: first.line,
+        message: format!(
+            "labels the label map does not know, left out: {}",
+            list.join(", ")
+        ),
+    })
 }
 
 impl HandFrames {
     /// The activity of each frame's label by `map`, and the labels it does not know.
     pub fn activities(&self, map: &LabelMap) -> FrameActivities {
-        let mut unknown: Vec<UnknownLabel> = Vec::new();
+        let mut unknown = UnknownLabels::default();
         let activities = self
             .frames
             .iter()
-            .map(|f| {
-                let label = f.label.as_deref()?;
-                let activity = map.activity(label);
-                if activity.is_none() {
-                    match unknown.iter_mut().find(|u| u.label == label) {
-                        Some(u) => u.frames += 1,
-                        None => unknown.push(UnknownLabel {
-                            label: label.to_string(),
-                            frames: 1,
-                            line: f.line,
-                        }),
-                    }
-                }
-                activity
-            })
+            .map(|f| unknown.activity(map, f))
             .collect();
         FrameActivities {
             activities,
-            unknown,
+            unknown: unknown.labels,
         }
     }
 
@@ -569,27 +818,7 @@ impl HandFrames {
     /// never has it); `actedOn` and `inHand` of the objects named. No `graspable`,
     /// `inTouch` or `onTop`: the table has no geometry.
     pub fn state(&self, space: &FactSpace, frame: &LabelledFrame) -> State {
-        let mut state = space.empty_state();
-        let hand = HAND_ID;
-        let hand_facts = &frame.hand;
-        let mut add = |fact: Fact| {
-            if let Some(id) = space.id(&fact) {
-                state.insert(id);
-            }
-        };
-        if hand_facts.moving {
-            add(Fact::unary(Predicate::HandMove, hand));
-        }
-        if hand_facts.open == Some(true) {
-            add(Fact::unary(Predicate::HandOpen, hand));
-        }
-        if let Some(o) = hand_facts.acted_on {
-            add(Fact::binary(Predicate::ActedOn, hand, o));
-        }
-        if let Some(o) = hand_facts.in_hand {
-            add(Fact::binary(Predicate::InHand, hand, o));
-        }
-        state
+        hand_state(space, frame)
     }
 
     /// Segments the table's hand with `tree` and the minimum duration (s), each
@@ -599,8 +828,7 @@ impl HandFrames {
         let space = self.fact_space();
         let mut segmenter = Segmenter::new(&[HAND_ID], tree.clone(), min_duration);
         for f in &self.frames {
-            let state = self.state(&space, f);
-            segmenter.push(f.time, &[f.hand], &state);
+            segmenter.push(f.time, &[f.hand], &hand_state(&space, f));
         }
         (space, segmenter.finish())
     }
@@ -612,6 +840,31 @@ impl HandFrames {
             _ => 0.0,
         }
     }
+}
+
+/// The state of one frame of a hand-state table: [`HandFrames::state`].
+fn hand_state(space: &FactSpace, frame: &LabelledFrame) -> State {
+    let mut state = space.empty_state();
+    let hand = HAND_ID;
+    let hand_facts = &frame.hand;
+    let mut add = |fact: Fact| {
+        if let Some(id) = space.id(&fact) {
+            state.insert(id);
+        }
+    };
+    if hand_facts.moving {
+        add(Fact::unary(Predicate::HandMove, hand));
+    }
+    if hand_facts.open == Some(true) {
+        add(Fact::unary(Predicate::HandOpen, hand));
+    }
+    if let Some(o) = hand_facts.acted_on {
+        add(Fact::binary(Predicate::ActedOn, hand, o));
+    }
+    if let Some(o) = hand_facts.in_hand {
+        add(Fact::binary(Predicate::InHand, hand, o));
+    }
+    state
 }
 
 /// The one hand of a hand-state table: the first entity of [`HandFrames::header`].

@@ -211,150 +211,247 @@ pub fn is_arff_text(text: &str) -> bool {
     false
 }
 
-/// Where the reader is in the file.
+/// Where the reader is in the header (after `@data`, [`ArffReader`] reads rows).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Section {
     /// Before `@relation`.
     Start,
     /// Between `@relation` and `@data`.
     Header,
-    /// After `@data`.
-    Data,
 }
 
 /// Reads an ARFF file as Weka's `ArffLoader` does (see the module documentation for
 /// the grammar, the sparse rows' zeros, and where this reader refuses what Weka would
 /// guess). Errors name the line, the column, and the attribute (or the keyword).
+///
+/// The whole table in memory: for files of any length, read with [`ArffReader`].
 pub fn read_arff(text: &str) -> Result<ArffTable, ArffError> {
-    let mut relation = String::new();
-    let mut attributes: Vec<ArffAttribute> = Vec::new();
-    let mut rows: Vec<ArffRow> = Vec::new();
-    let mut section = Section::Start;
-    let mut last_line = 0;
-    for (i, raw) in text.lines().enumerate() {
-        let line = i + 1;
-        last_line = line;
-        let tokens = tokenize(raw).map_err(|e| {
-            let field = match section {
-                Section::Data => attributes
-                    .get(e.before.min(attributes.len().saturating_sub(1)))
-                    .map_or("@data", |a| a.name.as_str()),
-                _ => "@attribute",
-            };
-            error(line, e.column, field, e.message)
-        })?;
-        let Some(first) = tokens.first() else {
-            continue;
+    let mut reader = ArffReader::new(text.as_bytes())?;
+    let rows = reader.by_ref().collect::<Result<Vec<_>, _>>()?;
+    Ok(ArffTable {
+        relation: reader.relation,
+        attributes: reader.attributes,
+        rows,
+    })
+}
+
+/// An ARFF file read a row at a time, in memory bounded by its longest line: the header
+/// when it is created, then each data row as an [`Iterator`] item. It reads exactly as
+/// [`read_arff`] does, with the same errors at the same places; after an error it ends.
+#[derive(Debug)]
+pub struct ArffReader<R> {
+    input: R,
+    relation: String,
+    attributes: Vec<ArffAttribute>,
+    /// The number of the last line read.
+    line: usize,
+    /// The text of the last line read (reused from line to line).
+    text: String,
+    /// Set at the end of the input or after an error.
+    done: bool,
+}
+
+impl<R: std::io::BufRead> ArffReader<R> {
+    /// Reads the header, up to and including `@data`.
+    pub fn new(input: R) -> Result<ArffReader<R>, ArffError> {
+        let mut reader = ArffReader {
+            input,
+            relation: String::new(),
+            attributes: Vec::new(),
+            line: 0,
+            text: String::new(),
+            done: false,
         };
-        if section == Section::Data {
-            let row = if first.kind == Kind::Open {
-                sparse_row(line, &tokens, &attributes)?
-            } else {
-                dense_row(line, &tokens, &attributes)?
-            };
-            rows.push(row);
-            continue;
-        }
-        let keyword = first.text.to_ascii_lowercase();
-        if first.kind != Kind::Word || !keyword.starts_with('@') {
-            let expected = if section == Section::Start {
-                "@relation"
-            } else {
-                "@attribute or @data"
-            };
-            return Err(error(
-                line,
-                first.column,
-                &first.text,
-                format!("expected {expected}, found `{}`", first.shown()),
-            ));
-        }
-        match (section, keyword.as_str()) {
-            (Section::Start, "@relation") => {
-                relation = relation_name(line, &tokens)?;
-                section = Section::Header;
+        reader.read_header()?;
+        Ok(reader)
+    }
+
+    /// `@relation`.
+    pub fn relation(&self) -> &str {
+        &self.relation
+    }
+
+    /// `@attribute`s.
+    pub fn attributes(&self) -> &[ArffAttribute] {
+        &self.attributes
+    }
+
+    /// Reads the next line into `self.text`, without its line end (`\n` or `\r\n`, as
+    /// [`str::lines`] splits). `false` at the end of the input.
+    fn next_line(&mut self, field: &str) -> Result<bool, ArffError> {
+        self.text.clear();
+        match self.input.read_line(&mut self.text) {
+            Ok(0) => Ok(false),
+            Ok(_) => {
+                self.line += 1;
+                if self.text.ends_with('\n') {
+                    self.text.pop();
+                    if self.text.ends_with('\r') {
+                        self.text.pop();
+                    }
+                }
+                Ok(true)
             }
-            (Section::Start, _) => {
+            Err(e) => {
+                let line = self.line + 1;
+                let message = if e.kind() == std::io::ErrorKind::InvalidData {
+                    "the line is not UTF-8 text".to_string()
+                } else {
+                    format!("cannot read the file: {e}")
+                };
+                Err(error(line, 0, field, message))
+            }
+        }
+    }
+
+    fn read_header(&mut self) -> Result<(), ArffError> {
+        let mut section = Section::Start;
+        let field = |section: Section| match section {
+            Section::Start => "@relation",
+            _ => "@attribute",
+        };
+        while self.next_line(field(section))? {
+            let line = self.line;
+            let tokens =
+                tokenize(&self.text).map_err(|e| error(line, e.column, "@attribute", e.message))?;
+            let Some(first) = tokens.first() else {
+                continue;
+            };
+            let keyword = first.text.to_ascii_lowercase();
+            if first.kind != Kind::Word || !keyword.starts_with('@') {
+                let expected = if section == Section::Start {
+                    "@relation"
+                } else {
+                    "@attribute or @data"
+                };
                 return Err(error(
                     line,
                     first.column,
                     &first.text,
-                    format!(
-                        "an ARFF file starts with `@relation NAME`, found `{}`",
-                        first.text
-                    ),
-                ))
+                    format!("expected {expected}, found `{}`", first.shown()),
+                ));
             }
-            (_, "@attribute") => {
-                let attribute = attribute(line, &tokens)?;
-                if attributes.iter().any(|a| a.name == attribute.name) {
-                    return Err(error(
-                        line,
-                        tokens[1].column,
-                        &attribute.name,
-                        format!("attribute `{}` is declared twice", attribute.name),
-                    ));
+            match (section, keyword.as_str()) {
+                (Section::Start, "@relation") => {
+                    self.relation = relation_name(line, &tokens)?;
+                    section = Section::Header;
                 }
-                attributes.push(attribute);
-            }
-            (_, "@data") => {
-                if attributes.is_empty() {
+                (Section::Start, _) => {
                     return Err(error(
                         line,
                         first.column,
-                        "@data",
-                        "no @attribute before @data",
-                    ));
+                        &first.text,
+                        format!(
+                            "an ARFF file starts with `@relation NAME`, found `{}`",
+                            first.text
+                        ),
+                    ))
                 }
-                if let Some(extra) = tokens.get(1) {
+                (_, "@attribute") => {
+                    let attribute = attribute(line, &tokens)?;
+                    if self.attributes.iter().any(|a| a.name == attribute.name) {
+                        return Err(error(
+                            line,
+                            tokens[1].column,
+                            &attribute.name,
+                            format!("attribute `{}` is declared twice", attribute.name),
+                        ));
+                    }
+                    self.attributes.push(attribute);
+                }
+                (_, "@data") => {
+                    if self.attributes.is_empty() {
+                        return Err(error(
+                            line,
+                            first.column,
+                            "@data",
+                            "no @attribute before @data",
+                        ));
+                    }
+                    if let Some(extra) = tokens.get(1) {
+                        return Err(error(
+                            line,
+                            extra.column,
+                            "@data",
+                            format!(
+                                "expected the end of the line after @data, found `{}`",
+                                extra.shown()
+                            ),
+                        ));
+                    }
+                    return Ok(());
+                }
+                (_, "@relation") => {
                     return Err(error(
                         line,
-                        extra.column,
-                        "@data",
-                        format!(
-                            "expected the end of the line after @data, found `{}`",
-                            extra.shown()
-                        ),
-                    ));
+                        first.column,
+                        "@relation",
+                        "a second @relation: a file holds one relation",
+                    ))
                 }
-                section = Section::Data;
-            }
-            (_, "@relation") => {
-                return Err(error(
-                    line,
-                    first.column,
-                    "@relation",
-                    "a second @relation: a file holds one relation",
-                ))
-            }
-            _ => {
-                return Err(error(
-                    line,
-                    first.column,
-                    &first.text,
-                    format!("expected @attribute or @data, found `{}`", first.text),
-                ))
+                _ => {
+                    return Err(error(
+                        line,
+                        first.column,
+                        &first.text,
+                        format!("expected @attribute or @data, found `{}`", first.text),
+                    ))
+                }
             }
         }
-    }
-    if section != Section::Data {
-        let what = if section == Section::Start {
-            "no @relation: an ARFF file starts with `@relation NAME`"
+        let (field, what) = if section == Section::Start {
+            (
+                "@relation",
+                "no @relation: an ARFF file starts with `@relation NAME`",
+            )
         } else {
-            "no @data section"
+            ("@data", "no @data section")
         };
-        let field = if section == Section::Start {
-            "@relation"
-        } else {
-            "@data"
-        };
-        return Err(error(last_line.max(1), 0, field, what));
+        Err(error(self.line.max(1), 0, field, what))
     }
-    Ok(ArffTable {
-        relation,
-        attributes,
-        rows,
-    })
+
+    /// The next data row, `None` at the end of the file.
+    fn read_row(&mut self) -> Result<Option<ArffRow>, ArffError> {
+        loop {
+            let field = self.attributes.first().map_or("@data", |a| a.name.as_str());
+            let field = field.to_string();
+            if !self.next_line(&field)? {
+                return Ok(None);
+            }
+            let line = self.line;
+            let attributes = &self.attributes;
+            let tokens = tokenize(&self.text).map_err(|e| {
+                let field = attributes
+                    .get(e.before.min(attributes.len().saturating_sub(1)))
+                    .map_or("@data", |a| a.name.as_str());
+                error(line, e.column, field, e.message)
+            })?;
+            let Some(first) = tokens.first() else {
+                continue;
+            };
+            return if first.kind == Kind::Open {
+                sparse_row(line, &tokens, attributes)
+            } else {
+                dense_row(line, &tokens, attributes)
+            }
+            .map(Some);
+        }
+    }
+}
+
+impl<R: std::io::BufRead> Iterator for ArffReader<R> {
+    type Item = Result<ArffRow, ArffError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        let row = self.read_row().transpose();
+        if !matches!(row, Some(Ok(_))) {
+            self.done = true;
+        }
+        row
+    }
 }
 
 /// `@relation NAME`, nothing after the name.

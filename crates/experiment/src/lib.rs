@@ -1,0 +1,134 @@
+//! demoplan's experiments as a library: the paper's grid ([`reproduce()`]) and the study
+//! over conditions ([`study()`]).
+//!
+//! An experiment is a list of [`Cell`]s, one planning run each. A cell holds its
+//! [`Conditions`] (simulated study, grouping, scene and goal), its level (a priority,
+//! the full domain, or the paper's Algorithm 1), its [`Planner`], its time limit and its
+//! repeat, so it can be computed alone ([`Lab::run`]); its id is a stable hash of all
+//! of that ([`Cell::id`]). A cell gives one [`RunRecord`] (outcome, the four times,
+//! expansions, generated states, plan cost, peak memory, execution check), written as
+//! one JSON line, so grids resume by skipping the ids already in their results and can
+//! be split over processes or cluster jobs. [`ratio`] and [`quartiles`] turn records
+//! into slimming ratios, bounds where a run hit its limit; [`findings()`] writes what
+//! the results say, from the results alone.
+//!
+//! The crate writes files (results, tables, figures, pages) but never touches the
+//! terminal: progress goes to a callback ([`Progress`]).
+//!
+//! ```
+//! use experiment::{Cell, Conditions, LevelChoice, Planner};
+//! use std::time::Duration;
+//! let cell = Cell {
+//!     conditions: Conditions::paper_goal(7, 5, 1),
+//!     level: LevelChoice::Full,
+//!     planner: Planner::Lmcut,
+//!     time_limit: Duration::from_secs(60),
+//!     repeat: 0,
+//! };
+//! assert_eq!(cell.conditions.cubes(), 6);
+//! assert_eq!(cell.id().len(), 16);
+//! ```
+
+mod cell;
+mod findings;
+mod lab;
+mod output;
+mod ratio;
+mod record;
+mod reproduce;
+mod study;
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+/// The paper's published numbers (its Tables 3 and 4, library statistics, ratios).
+pub use report::paper;
+
+pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAMS};
+pub use findings::findings;
+pub use lab::{execute, learn_study, tower_problem, towers, Lab};
+pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
+pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
+pub use reproduce::{reproduce, ReproduceOptions, Reproduction};
+pub use study::{study, study_grid, StudyOptions, StudyOutcome};
+
+/// Where a grid is: cells done of the total, the cell now running, time since start.
+#[derive(Debug, Clone, Copy)]
+pub struct Progress<'a> {
+    pub done: usize,
+    pub total: usize,
+    /// What runs now, for people: e.g. `lmcut full height 5 seed 3`.
+    pub current: &'a str,
+    pub elapsed: Duration,
+}
+
+/// What can go wrong in an experiment. "No plan" and "out of time" are outcomes in the
+/// records, not errors.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ExperimentError {
+    /// An option the experiment cannot run with (the command line's fault).
+    #[error("{0}")]
+    Options(String),
+    /// A cell's conditions cannot be set up.
+    #[error("{0}")]
+    Condition(String),
+    /// A cell names other simulator parameters than the lab has.
+    #[error("the cell wants simulator parameters {wanted}, the lab has {have}")]
+    Params { wanted: String, have: String },
+    /// The grid runs Fast Downward and none was given.
+    #[error("the grid runs Fast Downward, and none was located")]
+    FastDownwardMissing,
+    /// A results file with a line that is not a record.
+    #[error("{}:{line}: not a result record: {message}", file.display())]
+    Results {
+        file: PathBuf,
+        line: usize,
+        message: String,
+    },
+    /// A file could not be read or written.
+    #[error("{}: {message}", path.display())]
+    Io { path: PathBuf, message: String },
+}
+
+/// Runs `cells` in order, skipping those whose id has a record in `done`, appending
+/// each new record to `results` (when given) as it finishes. Returns the records of
+/// every cell, `done`'s and the new ones, in the order of `cells`.
+pub fn run_cells(
+    lab: &mut Lab,
+    cells: &[Cell],
+    done: &[RunRecord],
+    results: Option<&std::path::Path>,
+    progress: &mut dyn FnMut(Progress<'_>),
+    describe: &dyn Fn(&Cell) -> String,
+) -> Result<Vec<RunRecord>, ExperimentError> {
+    let start = Instant::now();
+    let by_id: std::collections::HashMap<&str, &RunRecord> =
+        done.iter().map(|r| (r.id.as_str(), r)).collect();
+    let mut out = Vec::with_capacity(cells.len());
+    for (i, cell) in cells.iter().enumerate() {
+        let id = cell.id();
+        if let Some(r) = by_id.get(id.as_str()) {
+            out.push((*r).clone());
+            continue;
+        }
+        let what = describe(cell);
+        progress(Progress {
+            done: i,
+            total: cells.len(),
+            current: &what,
+            elapsed: start.elapsed(),
+        });
+        let record = lab.run(cell)?;
+        if let Some(path) = results {
+            append_record(path, &record)?;
+        }
+        out.push(record);
+    }
+    progress(Progress {
+        done: cells.len(),
+        total: cells.len(),
+        current: "done",
+        elapsed: start.elapsed(),
+    });
+    Ok(out)
+}

@@ -1,0 +1,68 @@
+//! Writing the experiment's files: through a temporary file and a rename, so that a
+//! killed run leaves the old file or the new one, never half of one.
+
+use std::path::Path;
+
+use crate::ExperimentError;
+
+pub(crate) fn io_error(path: &Path, e: std::io::Error) -> ExperimentError {
+    ExperimentError::Io {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    }
+}
+
+pub(crate) fn create_dir(path: &Path) -> Result<(), ExperimentError> {
+    std::fs::create_dir_all(path).map_err(|e| io_error(path, e))
+}
+
+/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`.
+pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), ExperimentError> {
+    let mut name = path.file_name().unwrap_or_default().to_os_string();
+    name.push(".demoplan-tmp");
+    let tmp = path.with_file_name(name);
+    std::fs::write(&tmp, bytes)
+        .and_then(|()| std::fs::rename(&tmp, path))
+        .map_err(|e| {
+            let _ = std::fs::remove_file(&tmp);
+            io_error(path, e)
+        })
+}
+
+pub(crate) fn write_text(path: &Path, text: &str) -> Result<(), ExperimentError> {
+    write_file(path, text.as_bytes())
+}
+
+/// Cores, memory and system, from /proc where there is one.
+pub(crate) fn machine() -> String {
+    let cores = std::thread::available_parallelism().map_or(0, |n| n.get());
+    let memory = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|m| {
+            m.lines()
+                .find(|l| l.starts_with("MemTotal:"))
+                .and_then(|l| l.split_whitespace().nth(1))
+                .and_then(|kb| kb.parse::<u64>().ok())
+        })
+        .map_or(String::new(), |kb| {
+            format!(", {:.0} GB", kb as f64 / 1024.0 / 1024.0)
+        });
+    format!(
+        "{cores} cores{memory}, {} {}",
+        std::env::consts::OS,
+        std::env::consts::ARCH
+    )
+}
+
+/// A CSV field: quoted when it holds a comma, quote or newline.
+pub(crate) fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+pub(crate) fn opt<T: ToString>(v: Option<T>) -> String {
+    v.map_or(String::new(), |v| v.to_string())
+}

@@ -1,0 +1,306 @@
+//! Result records: one per cell, one JSON line each, appended as cells finish and read
+//! back to resume a grid or to report on it.
+
+use std::io::Write as _;
+use std::path::Path;
+
+use report::{Bound, Measure};
+use serde::{Deserialize, Serialize};
+
+use crate::cell::{Cell, Conditions, LevelChoice, Planner};
+use crate::ExperimentError;
+
+/// A run's time in four parts, in seconds.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+pub struct Times {
+    /// Parse and translate (Fast Downward: its translator's wall-clock "Done!" time).
+    pub translate_s: f64,
+    /// Heuristic construction: iPDB's hill climbing, LM-cut's setup (Fast Downward:
+    /// "Total time" minus "Search time").
+    pub heuristic_s: f64,
+    /// The search proper ("Search time", the paper's measure).
+    pub search_s: f64,
+    /// Wall time of the whole run (Fast Downward: its whole process tree).
+    pub total_s: f64,
+}
+
+impl Times {
+    /// The time by `measure`.
+    pub fn get(&self, measure: Measure) -> f64 {
+        match measure {
+            Measure::Search => self.search_s,
+            Measure::Total => self.total_s,
+        }
+    }
+
+    pub(crate) fn of(run: &slim::PlanRun) -> Times {
+        Times {
+            translate_s: run.translate_time.as_secs_f64(),
+            heuristic_s: run.heuristic_time.as_secs_f64(),
+            search_s: run.search_time.as_secs_f64(),
+            total_s: run.total_time.as_secs_f64(),
+        }
+    }
+
+    pub(crate) fn add(&mut self, other: &Times) {
+        self.translate_s += other.translate_s;
+        self.heuristic_s += other.heuristic_s;
+        self.search_s += other.search_s;
+        self.total_s += other.total_s;
+    }
+}
+
+/// One level tried by Algorithm 1.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct WideningStep {
+    pub prio: usize,
+    pub operators: usize,
+    /// [`slim::Outcome::word`].
+    pub outcome: String,
+    pub times: Times,
+}
+
+/// What one cell gave.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RunRecord {
+    /// [`Cell::id`].
+    pub id: String,
+    pub conditions: Conditions,
+    /// [`LevelChoice::name`]: `prio-N`, `full`, `alg1`.
+    pub level: String,
+    /// [`Planner::name`].
+    pub planner: String,
+    pub time_limit_s: f64,
+    pub repeat: u32,
+    /// The priority planned on: the level's, the full domain's, or for Algorithm 1 the
+    /// level that gave the plan (else the last tried).
+    pub prio: usize,
+    /// Operators in that domain.
+    pub operators: usize,
+    /// [`slim::Outcome::word`]: `solved`, `relaxed-unreachable`, `unsolvable`, `limit`,
+    /// `memory`, `error`.
+    pub outcome: String,
+    /// For Algorithm 1 the cumulative times over every level tried.
+    pub times: Times,
+    pub expansions: Option<u64>,
+    pub generated: Option<u64>,
+    pub cost: Option<u64>,
+    pub length: Option<usize>,
+    pub peak_memory_kb: Option<u64>,
+    /// The plan executed in the cube world: its effects and goal held.
+    pub executed: Option<bool>,
+    /// The plan's actions.
+    #[serde(default)]
+    pub plan: Vec<String>,
+    /// Algorithm 1 only: every level tried, in order.
+    #[serde(default)]
+    pub widening: Vec<WideningStep>,
+    /// Why the run is an error, if it is one.
+    #[serde(default)]
+    pub error: Option<String>,
+}
+
+impl RunRecord {
+    /// Whether a plan was found.
+    pub fn solved(&self) -> bool {
+        self.outcome == "solved"
+    }
+
+    /// Whether the run stopped at its time or memory limit: its times are lower bounds.
+    pub fn hit_limit(&self) -> bool {
+        self.outcome == "limit" || self.outcome == "memory"
+    }
+
+    /// The time by `measure` and whether it is exact or a lower bound (the run hit its
+    /// limit); `None` for a run that gave no time worth comparing (no plan exists in
+    /// its domain, or an error), and for the search time of a run that hit its limit
+    /// before its search expanded a state (iPDB's hill climbing took the whole limit):
+    /// its search never began, so nothing is known of it, not even a bound.
+    pub fn time(&self, measure: Measure) -> Option<(f64, Bound)> {
+        if self.solved() {
+            Some((self.times.get(measure), Bound::Exact))
+        } else if self.hit_limit() {
+            let searched = self.expansions != Some(0);
+            if measure == Measure::Search && !searched {
+                return None;
+            }
+            Some((self.times.get(measure), Bound::AtLeast))
+        } else {
+            None
+        }
+    }
+
+    /// The level, parsed.
+    pub fn level_choice(&self) -> Option<LevelChoice> {
+        LevelChoice::from_name(&self.level)
+    }
+
+    /// The planner, parsed.
+    pub fn planner_choice(&self) -> Option<Planner> {
+        Planner::from_name(&self.planner)
+    }
+
+    /// Whether this record is `cell`'s.
+    pub fn is_of(&self, cell: &Cell) -> bool {
+        self.id == cell.id()
+    }
+
+    /// One JSON line, without the newline.
+    pub fn to_json_line(&self) -> String {
+        serde_json::to_string(self).unwrap_or_default()
+    }
+}
+
+/// Reads records written one JSON object per line. A last line without its newline is
+/// an append that was cut short (the process was killed while writing it): it is left
+/// out, so that its cell runs again. Any other line that is not a record is an error
+/// naming its line.
+pub fn parse_records(text: &str, file: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
+    let mut out = Vec::new();
+    let complete = if text.ends_with('\n') || text.is_empty() {
+        text
+    } else {
+        match text.rfind('\n') {
+            Some(i) => &text[..=i],
+            None => "",
+        }
+    };
+    for (i, line) in complete.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let record: RunRecord =
+            serde_json::from_str(line).map_err(|e| ExperimentError::Results {
+                file: file.to_path_buf(),
+                line: i + 1,
+                message: e.to_string(),
+            })?;
+        out.push(record);
+    }
+    Ok(out)
+}
+
+/// Reads a results file; a missing one has no records.
+pub fn read_records(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
+    match std::fs::read_to_string(path) {
+        Ok(text) => parse_records(&text, path),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(Vec::new()),
+        Err(e) => Err(ExperimentError::Io {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        }),
+    }
+}
+
+/// Reads a results file to resume from it: like [`read_records`], and a last line cut
+/// short is removed from the file (atomically), so that the next append starts on a
+/// line of its own.
+pub fn read_records_for_append(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
+    let text = match std::fs::read_to_string(path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => {
+            return Err(ExperimentError::Io {
+                path: path.to_path_buf(),
+                message: e.to_string(),
+            })
+        }
+    };
+    let records = parse_records(&text, path)?;
+    if !text.is_empty() && !text.ends_with('\n') {
+        let complete = text.rfind('\n').map_or("", |i| &text[..=i]);
+        crate::output::write_text(path, complete)?;
+    }
+    Ok(records)
+}
+
+/// Appends one record as one line, in one write, and flushes it to the disk: a crash
+/// loses at most the line being written, which [`parse_records`] then leaves out.
+pub fn append_record(path: &Path, record: &RunRecord) -> Result<(), ExperimentError> {
+    let io = |e: std::io::Error| ExperimentError::Io {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    };
+    let mut file = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path)
+        .map_err(io)?;
+    let mut line = record.to_json_line();
+    line.push('\n');
+    file.write_all(line.as_bytes()).map_err(io)?;
+    file.sync_data().map_err(io)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn record(id: &str) -> RunRecord {
+        RunRecord {
+            id: id.to_string(),
+            conditions: Conditions::paper_goal(7, 1, 1),
+            level: "prio-1".into(),
+            planner: "lmcut".into(),
+            time_limit_s: 20.0,
+            repeat: 0,
+            prio: 1,
+            operators: 5,
+            outcome: "solved".into(),
+            times: Times {
+                translate_s: 0.01,
+                heuristic_s: 0.002,
+                search_s: 0.003,
+                total_s: 0.015,
+            },
+            expansions: Some(10),
+            generated: Some(40),
+            cost: Some(190),
+            length: Some(5),
+            peak_memory_kb: Some(1024),
+            executed: Some(true),
+            plan: vec!["reach left_hand cube_2".into()],
+            widening: vec![],
+            error: None,
+        }
+    }
+
+    #[test]
+    fn records_read_back_and_a_cut_line_is_left_out() {
+        let a = record("a");
+        let b = record("b");
+        let text = format!("{}\n{}\n", a.to_json_line(), b.to_json_line());
+        let path = Path::new("results.jsonl");
+        assert_eq!(parse_records(&text, path).ok(), Some(vec![a.clone(), b]));
+        let cut = format!(
+            "{}\n{}",
+            a.to_json_line(),
+            &record("c").to_json_line()[..40]
+        );
+        assert_eq!(parse_records(&cut, path).ok(), Some(vec![a]));
+    }
+
+    #[test]
+    fn a_damaged_line_is_an_error_naming_it() {
+        let text = format!("{}\n{{\"id\": 3}}\n", record("a").to_json_line());
+        let e = parse_records(&text, Path::new("out/results.jsonl"))
+            .err()
+            .map(|e| e.to_string())
+            .unwrap_or_default();
+        assert!(e.contains("out/results.jsonl:2"), "{e}");
+    }
+
+    #[test]
+    fn a_limit_run_gives_a_lower_bound() {
+        let mut r = record("a");
+        assert_eq!(r.time(Measure::Total), Some((0.015, Bound::Exact)));
+        r.outcome = "limit".into();
+        assert_eq!(r.time(Measure::Search), Some((0.003, Bound::AtLeast)));
+        // Stopped in the hill climbing: the search never began.
+        r.expansions = Some(0);
+        assert_eq!(r.time(Measure::Search), None);
+        assert_eq!(r.time(Measure::Total), Some((0.015, Bound::AtLeast)));
+        r.outcome = "unsolvable".into();
+        assert_eq!(r.time(Measure::Search), None);
+    }
+}

@@ -22,6 +22,7 @@
 //! largest chunk (ROS 1) or record (MCAP), never by the file. Every problem is a
 //! [`BagError`] naming the file and a byte offset, or the topic, message and field.
 
+mod counting;
 mod decode;
 pub mod definition;
 mod mcap_file;
@@ -31,8 +32,10 @@ mod value;
 use std::collections::{BTreeMap, HashMap};
 use std::io::Read;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicU64;
 use std::sync::Arc;
 
+pub use counting::CountingReader;
 pub use decode::{decode, DecodeError, Encoding};
 pub use definition::{DefinitionError, Schema};
 pub use value::{Message as MessageValue, Value};
@@ -194,6 +197,8 @@ pub struct Bag {
     path: PathBuf,
     format: Format,
     storage: Storage,
+    /// Where every read adds its bytes, if someone watches (see [`Bag::count_bytes_read`]).
+    bytes_read: Option<Arc<AtomicU64>>,
 }
 
 /// The container format the first bytes of a file announce, if they announce one.
@@ -222,6 +227,7 @@ pub fn open(path: &Path) -> Result<Bag, BagError> {
             path: folder,
             format: Format::Ros2Folder,
             storage: Storage::Files(files),
+            bytes_read: None,
         });
     }
     let io = |source| BagError::Io {
@@ -253,6 +259,7 @@ pub fn open(path: &Path) -> Result<Bag, BagError> {
         path: path.to_path_buf(),
         format,
         storage: Storage::Files(vec![path.to_path_buf()]),
+        bytes_read: None,
     })
 }
 
@@ -277,6 +284,7 @@ pub fn from_bytes(name: &Path, bytes: Vec<u8>) -> Result<Bag, BagError> {
         path: name.to_path_buf(),
         format,
         storage: Storage::Memory(Arc::from(bytes)),
+        bytes_read: None,
     })
 }
 
@@ -287,6 +295,36 @@ impl Bag {
 
     pub fn format(&self) -> Format {
         self.format
+    }
+
+    /// From now on, every byte read from the bag's storage ([`Bag::topics`],
+    /// [`Bag::messages`]) is added to `bytes_read`, for a progress display. Seeks (a ROS 1
+    /// bag's index) add nothing.
+    pub fn count_bytes_read(&mut self, bytes_read: Arc<AtomicU64>) {
+        self.bytes_read = Some(bytes_read);
+    }
+
+    /// The bytes of the bag's storage: the file's size, or the sum of a ROS 2 folder's
+    /// MCAP files. A full pass reads this many.
+    pub fn size(&self) -> Result<u64, BagError> {
+        match &self.storage {
+            Storage::Memory(bytes) => Ok(bytes.len() as u64),
+            Storage::Files(files) => files.iter().try_fold(0u64, |sum, path| {
+                let meta = std::fs::metadata(path).map_err(|source| BagError::Io {
+                    path: path.clone(),
+                    source,
+                })?;
+                Ok(sum + meta.len())
+            }),
+        }
+    }
+
+    /// `input`, counted if someone watches.
+    fn counted(&self, input: Box<dyn Input>) -> Box<dyn Input> {
+        match &self.bytes_read {
+            Some(counter) => Box::new(CountingReader::new(input, counter.clone())),
+            None => input,
+        }
     }
 
     /// The topics, by name. A ROS 1 bag's index lists them; MCAP files are read through
@@ -344,7 +382,7 @@ impl Bag {
 
     fn ros1_reader(&self) -> Result<ros1::Ros1Reader, BagError> {
         let (input, len) = match &self.storage {
-            Storage::Memory(bytes) => (open_memory(bytes), bytes.len() as u64),
+            Storage::Memory(bytes) => (self.counted(open_memory(bytes)), bytes.len() as u64),
             Storage::Files(files) => {
                 let path = files.first().unwrap_or(&self.path);
                 let io = |source| BagError::Io {
@@ -353,7 +391,7 @@ impl Bag {
                 };
                 let file = std::fs::File::open(path).map_err(io)?;
                 let len = file.metadata().map_err(io)?.len();
-                (Box::new(file) as Box<dyn Input>, len)
+                (self.counted(Box::new(file)), len)
             }
         };
         ros1::Ros1Reader::new(&self.path, input, len)
@@ -367,13 +405,15 @@ impl Bag {
             Storage::Files(files) => Source::Mcap {
                 files: files.iter().rev().cloned().collect(),
                 current: None,
+                bytes_read: self.bytes_read.clone(),
             },
             Storage::Memory(bytes) => Source::Mcap {
                 files: Vec::new(),
                 current: Some(Box::new(mcap_file::McapReader::new(
                     &self.path,
-                    open_memory(bytes),
+                    self.counted(open_memory(bytes)),
                 ))),
+                bytes_read: None,
             },
         })
     }
@@ -398,6 +438,8 @@ enum Source {
     Mcap {
         files: Vec<PathBuf>,
         current: Option<Box<mcap_file::McapReader>>,
+        /// The bag's counter, for the files opened later.
+        bytes_read: Option<Arc<AtomicU64>>,
     },
 }
 
@@ -405,7 +447,11 @@ impl Source {
     fn next_raw(&mut self) -> Result<Option<RawMessage>, BagError> {
         match self {
             Source::Ros1(reader) => reader.next_message(),
-            Source::Mcap { files, current } => loop {
+            Source::Mcap {
+                files,
+                current,
+                bytes_read,
+            } => loop {
                 if let Some(reader) = current {
                     if let Some(message) = reader.next_message()? {
                         return Ok(Some(message));
@@ -417,8 +463,11 @@ impl Source {
                             path: path.clone(),
                             source,
                         })?;
-                        *current =
-                            Some(Box::new(mcap_file::McapReader::new(&path, Box::new(file))));
+                        let input: Box<dyn Input> = match bytes_read {
+                            Some(counter) => Box::new(CountingReader::new(file, counter.clone())),
+                            None => Box::new(file),
+                        };
+                        *current = Some(Box::new(mcap_file::McapReader::new(&path, input)));
                     }
                     None => {
                         *current = None;

@@ -1121,6 +1121,10 @@ impl Sink for AssemblySink<'_> {
     }
 }
 
+/// How many times [`import`] reads its source through ([`Importer::survey`], then
+/// [`Importer::assemble`]): a caller showing progress expects this many full reads.
+pub const SOURCE_PASSES: u64 = 2;
+
 /// Imports `source` into a native recording written to `out`: both passes, with
 /// recording id `id`. Returns the output, the header and the report.
 pub fn import<W: std::io::Write>(

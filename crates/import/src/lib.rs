@@ -54,11 +54,13 @@ mod error;
 mod glob;
 mod mapping;
 pub mod ros;
+/// Counts the bytes a reader reads, for progress (bags use it too).
+pub use bags::CountingReader;
 pub mod unity;
 
 pub use assemble::{
     import, Event, Gap, Held, IgnoredEntity, Importer, MappedEntity, Observation, Report, Sink,
-    Source,
+    Source, SOURCE_PASSES,
 };
 pub use axes::{Axes, QuaternionOrder, SignedAxis};
 pub use error::{ImportError, InputError, Location, Problem};

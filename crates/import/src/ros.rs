@@ -31,6 +31,8 @@
 
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicU64;
+use std::sync::Arc;
 
 use bags::{Bag, BagError, Message, Schema, Value};
 
@@ -156,10 +158,29 @@ fn frame_name(id: &str) -> &str {
 }
 
 impl RosBag {
+    /// The bytes one pass over the bag reads: its file's size, or the sum of a ROS 2
+    /// folder's MCAP files.
+    pub fn size(&self) -> Result<u64, ImportError> {
+        self.bag.size().map_err(bag_error)
+    }
+
     /// Opens `path` (a ROS 1 bag, an MCAP file, a ROS 2 bag folder) and checks the
     /// mapping's `[bag]` section against the bag's topics and definitions.
     pub fn open(path: &Path, mapping: &Mapping) -> Result<RosBag, ImportError> {
-        let bag = bags::open(path).map_err(bag_error)?;
+        RosBag::open_counting(path, mapping, None)
+    }
+
+    /// [`RosBag::open`], adding every byte read from the bag, now (the topic listing) and
+    /// in the import's passes, to `bytes_read` when given: progress for a caller to show.
+    pub fn open_counting(
+        path: &Path,
+        mapping: &Mapping,
+        bytes_read: Option<Arc<AtomicU64>>,
+    ) -> Result<RosBag, ImportError> {
+        let mut bag = bags::open(path).map_err(bag_error)?;
+        if let Some(counter) = bytes_read {
+            bag.count_bytes_read(counter);
+        }
         let format = match bag.format() {
             bags::Format::Ros1 => Format::Ros1,
             bags::Format::Mcap | bags::Format::Ros2Folder => Format::Ros2,

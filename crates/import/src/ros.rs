@@ -157,13 +157,15 @@ fn frame_name(id: &str) -> &str {
     strip_prefix(id.trim_start_matches('/'))
 }
 
-impl RosBag {
-    /// The bytes one pass over the bag reads: its file's size, or the sum of a ROS 2
-    /// folder's MCAP files.
-    pub fn size(&self) -> Result<u64, ImportError> {
-        self.bag.size().map_err(bag_error)
-    }
+/// The bytes one pass over the bag at `path` reads: the file's size, or the sum of a
+/// ROS 2 folder's MCAP files (what a progress bar counts to, per pass).
+pub fn bag_size(path: &Path) -> Result<u64, ImportError> {
+    bags::open(path)
+        .and_then(|bag| bag.size())
+        .map_err(bag_error)
+}
 
+impl RosBag {
     /// Opens `path` (a ROS 1 bag, an MCAP file, a ROS 2 bag folder) and checks the
     /// mapping's `[bag]` section against the bag's topics and definitions.
     pub fn open(path: &Path, mapping: &Mapping) -> Result<RosBag, ImportError> {

@@ -3,12 +3,12 @@
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::io::{IsTerminal, Read, Write};
 use std::path::{Path, PathBuf};
 
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::output;
+use crate::progress::BytesBar;
 use crate::recording_input::{self, SourceKind};
 
 pub struct ImportArgs {
@@ -18,7 +18,7 @@ pub struct ImportArgs {
     pub peak_heap: bool,
 }
 
-/// Sources this large show progress on a terminal.
+/// Sources this large show a progress bar on a terminal.
 const PROGRESS_FROM: u64 = 16 << 20;
 
 pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
@@ -78,21 +78,34 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
 
     let mut text = String::new();
     for (source, kind, stem, out) in &plan {
+        // A folder's size is its MCAP files' (the bag knows them); a file's is its own.
         let size = std::fs::metadata(source).map(|m| m.len()).unwrap_or(0);
-        let progress = Progress::new(source, size);
+        let what = format!("importing {}", source.display());
+        let passes = import::SOURCE_PASSES;
         let mut unity;
         let mut bag;
+        let progress;
         let (source_of_events, mapping): (&mut dyn import::Source, &import::Mapping) = match kind {
             SourceKind::Bag(format) => {
                 let mapping = &mappings[format.name()];
-                bag = import::ros::RosBag::open(source, mapping)
+                let size = import::ros::bag_size(source).unwrap_or(size);
+                // Opening lists the topics (a read through an MCAP bag, the index of a
+                // ROS 1 bag); then each pass reads the whole bag.
+                progress = BytesBar::new(&what, (passes + 1) * size, size >= PROGRESS_FROM);
+                bag = import::ros::RosBag::open_counting(source, mapping, Some(progress.counter()))
                     .map_err(|e| recording_input::import_failure(source, &e))?;
+                let opened = progress
+                    .counter()
+                    .load(std::sync::atomic::Ordering::Relaxed);
+                progress.set_total(opened + passes * size);
                 (&mut bag, mapping)
             }
             _ => {
-                unity = import::unity::UnityLog::new(|| {
+                progress = BytesBar::new(&what, passes * size, size >= PROGRESS_FROM);
+                let counter = progress.counter();
+                unity = import::unity::UnityLog::new(move || {
                     let file = std::fs::File::open(source)?;
-                    Ok(progress.reader(file))
+                    Ok(import::CountingReader::new(file, counter.clone()))
                 });
                 (&mut unity, &mappings[import::Format::Unity.name()])
             }
@@ -141,67 +154,4 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
         eprintln!("peak heap: {} bytes", crate::memory::peak_heap());
     }
     Ok(ExitCode::SUCCESS)
-}
-
-/// Progress on standard error, for long imports when it is a terminal: bytes read of the
-/// two passes.
-struct Progress<'a> {
-    name: &'a Path,
-    total: u64,
-    read: std::cell::Cell<u64>,
-    shown: std::cell::Cell<u64>,
-    on: bool,
-}
-
-impl<'a> Progress<'a> {
-    fn new(name: &'a Path, size: u64) -> Progress<'a> {
-        Progress {
-            name,
-            total: size.saturating_mul(2).max(1),
-            read: Default::default(),
-            shown: Default::default(),
-            on: size >= PROGRESS_FROM && std::io::stderr().is_terminal(),
-        }
-    }
-
-    fn reader<R: Read>(&self, inner: R) -> Counting<'_, 'a, R> {
-        Counting {
-            inner,
-            progress: self,
-        }
-    }
-
-    fn advance(&self, n: usize) {
-        if !self.on {
-            return;
-        }
-        let read = self.read.get() + n as u64;
-        self.read.set(read);
-        let percent = read * 100 / self.total;
-        if percent != self.shown.get() {
-            self.shown.set(percent);
-            let mut err = std::io::stderr();
-            let _ = write!(err, "\rimporting {}: {percent:3}%", self.name.display());
-            let _ = err.flush();
-        }
-    }
-
-    fn finish(&self) {
-        if self.on {
-            eprintln!();
-        }
-    }
-}
-
-struct Counting<'p, 'a, R> {
-    inner: R,
-    progress: &'p Progress<'a>,
-}
-
-impl<R: Read> Read for Counting<'_, '_, R> {
-    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
-        let n = self.inner.read(buf)?;
-        self.progress.advance(n);
-        Ok(n)
-    }
 }

@@ -420,6 +420,15 @@ fn terminals(world: &World, intent: &Intent, core: &Core, out: &mut Vec<Script>)
         s.linear(UP * FAST, 0.3);
         s.primitives.push("rise");
         out.push(s);
+        // Up and away, still moving: for effects that leave the cube the hand was at out
+        // of its reach (`graspable` deleted) while the hand moves on. A 3 cm rise stays
+        // within the 10 cm of `graspable`. Last, so it never displaces a candidate that
+        // already gave an action's effects.
+        let mut s = core.script.clone();
+        s.goto(here + UP * 0.12, UP * FAST);
+        s.linear(UP * FAST, 0.3);
+        s.primitives.extend(["retreat", "rise"]);
+        out.push(s);
     }
     if slow_ok {
         let mut s = core.script.clone();

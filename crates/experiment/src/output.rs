@@ -63,6 +63,26 @@ pub(crate) fn csv_field(text: &str) -> String {
     }
 }
 
+/// The condition columns `results.csv`, `runs.csv` and `ratios.csv` share, after the seed
+/// (which `ratios.csv`, a distribution over seeds, leaves out): participants,
+/// per_participant, params, hands, height, towers, distractors, cubes, activities,
+/// keep_without_effects.
+pub(crate) fn condition_fields(c: &crate::cell::Conditions) -> String {
+    format!(
+        "{},{},{},{},{},{},{},{},{},{}",
+        c.participants,
+        c.per_participant,
+        csv_field(&c.params),
+        c.hands,
+        c.height,
+        c.towers,
+        c.distractors,
+        c.cubes(),
+        c.activities,
+        c.keep_without_effects,
+    )
+}
+
 pub(crate) fn opt<T: ToString>(v: Option<T>) -> String {
     v.map_or(String::new(), |v| v.to_string())
 }

@@ -14,7 +14,7 @@ use slim::{FastDownward, MemoryProbe};
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
 use crate::lab::{tower_problem, towers, Lab};
-use crate::output::{create_dir, csv_field, machine, opt, write_file, write_text};
+use crate::output::{condition_fields, create_dir, machine, opt, write_file, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
 use crate::{run_cells, ExperimentError, Progress};
@@ -574,19 +574,10 @@ pub(crate) const RUNS_HEADER: &str = "id,seed,participants,per_participant,param
 pub(crate) fn runs_csv_row(r: &RunRecord) -> String {
     let c = &r.conditions;
     format!(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{:.6},{:.6},{:.6},{:.6},{},{},{},{},{},{}",
         r.id,
         c.seed,
-        c.participants,
-        c.per_participant,
-        csv_field(&c.params),
-        c.hands,
-        c.height,
-        c.towers,
-        c.distractors,
-        c.cubes(),
-        c.activities,
-        c.keep_without_effects,
+        condition_fields(c),
         r.level,
         r.prio,
         r.operators,

@@ -16,7 +16,7 @@ use slim::{FastDownward, MemoryProbe};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
 use crate::lab::Lab;
-use crate::output::{create_dir, csv_field, machine, write_file, write_text};
+use crate::output::{condition_fields, create_dir, machine, write_file, write_text};
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
 use crate::record::{read_records_for_append, RunRecord};
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
@@ -348,17 +348,8 @@ fn ratios_csv(rows: &[RatioRow]) -> String {
         let q = &row.quartiles;
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            c.participants,
-            c.per_participant,
-            csv_field(&c.params),
-            c.hands,
-            c.height,
-            c.towers,
-            c.distractors,
-            c.cubes(),
-            c.activities,
-            c.keep_without_effects,
+            "{},{},{},{},{},{},{},{},{},{}",
+            condition_fields(c),
             row.planner,
             row.measure.name(),
             row.which.name(),

@@ -169,7 +169,12 @@ impl RunRecord {
         if self.solved() {
             Some((self.times.get(measure), Bound::Exact))
         } else if self.hit_limit() {
-            let searched = self.expansions != Some(0);
+            // Fast Downward stopped at its limit prints no expansions and no search
+            // time: whether its search began is unknown, so no bound either.
+            let searched = match self.expansions {
+                Some(n) => n > 0,
+                None => self.times.search_s > 0.0,
+            };
             if measure == Measure::Search && !searched {
                 return None;
             }
@@ -347,6 +352,11 @@ mod tests {
         assert_eq!(r.time(Measure::Search), Some((0.003, Bound::AtLeast)));
         // Stopped in the hill climbing: the search never began.
         r.expansions = Some(0);
+        assert_eq!(r.time(Measure::Search), None);
+        assert_eq!(r.time(Measure::Total), Some((0.015, Bound::AtLeast)));
+        // Fast Downward killed at its limit: no expansions, no search time printed.
+        r.expansions = None;
+        r.times.search_s = 0.0;
         assert_eq!(r.time(Measure::Search), None);
         assert_eq!(r.time(Measure::Total), Some((0.015, Bound::AtLeast)));
         r.outcome = "unsolvable".into();

@@ -95,9 +95,8 @@ fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
     cells
 }
 
-/// Computes one cell of the reproduction, by id, in this process: what each child
-/// process of a reproduction run with [`ReproduceOptions::children`] does.
-pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+/// The lab of a reproduction and its one library (seed 7's by default), learned once.
+fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), ExperimentError> {
     let mut lab = Lab::new(
         simulate::SimParams::default(),
         options.fast_downward.clone(),
@@ -105,6 +104,13 @@ pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord,
     );
     let base = Conditions::paper_goal(options.seed, 1, options.hands);
     let library = lab.library(&base)?.clone();
+    Ok((lab, library))
+}
+
+/// Computes one cell of the reproduction, by id, in this process: what each child
+/// process of a reproduction run with [`ReproduceOptions::children`] does.
+pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    let (mut lab, library) = lab_and_library(options)?;
     let prios: Vec<usize> = levels(&library, DomainOptions::default())
         .iter()
         .map(|l| l.prio)
@@ -141,13 +147,7 @@ pub fn reproduce(
             "--goals and --repeat need at least one".into(),
         ));
     }
-    let mut lab = Lab::new(
-        simulate::SimParams::default(),
-        options.fast_downward.clone(),
-        options.memory,
-    );
-    let base = Conditions::paper_goal(options.seed, 1, options.hands);
-    let library = lab.library(&base)?.clone();
+    let (mut lab, library) = lab_and_library(options)?;
     let all_levels = levels(&library, DomainOptions::default());
     let chosen: Vec<&learn::Level<'_>> = all_levels
         .iter()

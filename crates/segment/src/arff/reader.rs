@@ -454,27 +454,34 @@ impl<R: std::io::BufRead> Iterator for ArffReader<R> {
     }
 }
 
+/// The name after a declaration's keyword (`tokens[0]`): the relation's or an
+/// attribute's (`whose`).
+fn declared_name(
+    line: usize,
+    tokens: &[Token],
+    keyword: &str,
+    whose: &str,
+) -> Result<String, ArffError> {
+    match tokens.get(1) {
+        Some(t) if t.is_text() => Ok(t.text.clone()),
+        Some(t) => Err(error(
+            line,
+            t.column,
+            keyword,
+            format!("expected the {whose} name, found `{}`", t.text),
+        )),
+        None => Err(error(
+            line,
+            tokens[0].column,
+            keyword,
+            format!("the {whose} name is missing"),
+        )),
+    }
+}
+
 /// `@relation NAME`, nothing after the name.
 fn relation_name(line: usize, tokens: &[Token]) -> Result<String, ArffError> {
-    let name = match tokens.get(1) {
-        Some(t) if t.is_text() => t.text.clone(),
-        Some(t) => {
-            return Err(error(
-                line,
-                t.column,
-                "@relation",
-                format!("expected the relation's name, found `{}`", t.text),
-            ))
-        }
-        None => {
-            return Err(error(
-                line,
-                tokens[0].column,
-                "@relation",
-                "the relation's name is missing",
-            ))
-        }
-    };
+    let name = declared_name(line, tokens, "@relation", "relation's")?;
     if let Some(extra) = tokens.get(2) {
         return Err(error(
             line,
@@ -491,25 +498,7 @@ fn relation_name(line: usize, tokens: &[Token]) -> Result<String, ArffError> {
 
 /// `@attribute NAME TYPE`.
 fn attribute(line: usize, tokens: &[Token]) -> Result<ArffAttribute, ArffError> {
-    let name = match tokens.get(1) {
-        Some(t) if t.is_text() => t.text.clone(),
-        Some(t) => {
-            return Err(error(
-                line,
-                t.column,
-                "@attribute",
-                format!("expected the attribute's name, found `{}`", t.text),
-            ))
-        }
-        None => {
-            return Err(error(
-                line,
-                tokens[0].column,
-                "@attribute",
-                "the attribute's name is missing",
-            ))
-        }
-    };
+    let name = declared_name(line, tokens, "@attribute", "attribute's")?;
     let Some(spec) = tokens.get(2) else {
         return Err(error(
             line,

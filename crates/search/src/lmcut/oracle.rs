@@ -1,4 +1,6 @@
-//! Test support shared by the integration tests: slow, obviously correct references.
+//! The test oracle of LM-cut: slow, obviously correct, and stating the supporter rule
+//! whose values depend only on the costs (`SupporterRule::KeepRoundStart`, which exists
+//! for this comparison alone).
 
 use task::{Fact, Task};
 
@@ -6,14 +8,14 @@ use task::{Fact, Task};
 /// slow and obviously correct. Facts are numbered as in `LmCut` (variable offsets, then the
 /// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
 /// stated here as plainly as possible:
-/// - an operator's preconditions are ordered by `search::tie_breaking_order`;
+/// - an operator's preconditions are ordered by `super::tie_breaking_order`;
 /// - round 1: the precondition reached last (`first_supporters`);
 /// - later rounds: the supporter of the round before while it still has the highest
 ///   h^max, else the first precondition of highest h^max;
 /// - while the goal zone is marked (depth first from the goal fact, achievers in operator
 ///   order), a zero-cost operator's supporter becomes the first precondition tying with it
 ///   that has no zero-cost achiever or is already in the zone.
-pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
+pub(super) fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
     const INF: u64 = u64::MAX;
     let mut offset = Vec::new();
     let mut n = 0usize;
@@ -28,7 +30,7 @@ pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
         .operators
         .iter()
         .map(|o| {
-            let mut pre: Vec<usize> = search::tie_breaking_order(o, &rank).map(fact).collect();
+            let mut pre: Vec<usize> = super::tie_breaking_order(o, &rank).map(fact).collect();
             if pre.is_empty() {
                 pre.push(fact_i);
             }

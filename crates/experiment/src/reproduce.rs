@@ -17,7 +17,7 @@ use crate::lab::{tower_problem, towers, Lab};
 use crate::output::{condition_fields, create_dir, machine, opt, write_png, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
-use crate::{run_cells, ExperimentError, Progress};
+use crate::{run_cells, ExperimentError, Progress, Runner};
 
 /// What `reproduce` runs.
 #[derive(Debug, Clone)]
@@ -185,7 +185,14 @@ pub fn reproduce(
             c.conditions.height - 1
         )
     };
-    let records = run_cells(&mut lab, &cells, &[], None, progress, &describe)?;
+    let records = run_cells(
+        Runner::InProcess(&mut lab),
+        &cells,
+        &[],
+        None,
+        progress,
+        &describe,
+    )?;
 
     // Results.
     for r in records.iter().filter(|r| r.solved() && r.repeat == 0) {

@@ -86,14 +86,38 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         time_limit: time_limit(&args.time_limit)?,
         fast_downward: fast_downward(args.with_fd, args.fd.as_deref())?,
         memory: Some(crate::memory::probe()),
+        children: None,
     };
+    if let Some(id) = &args.cell {
+        let record = experiment::study_cell(&options, id).map_err(experiment_failure)?;
+        println!("{}", record.to_json_line());
+        return Ok(ExitCode::SUCCESS);
+    }
+    let jobs = match args.jobs {
+        Some(n) => n as usize,
+        None => std::thread::available_parallelism().map_or(1, usize::from),
+    };
+    let mut options = options;
+    if jobs > 1 {
+        let program = std::env::current_exe().map_err(|e| {
+            Failure::plain(
+                ExitCode::USAGE,
+                format!("-j {jobs}: cannot find this program to run its cells: {e}"),
+            )
+        })?;
+        options.children = Some(experiment::CellCommand {
+            program,
+            args: std::env::args_os().skip(1).collect(),
+            jobs,
+        });
+    }
     let bar = Bar::new();
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();
     let done = result.map_err(experiment_failure)?;
     println!(
-        "Study: {} runs ({} computed now, {} from earlier results) in {:.0} s; {} plan(s) \
-         failed the execution check. Wrote {}: open {}",
+        "Study: {} runs ({} computed now, {} from earlier results, {jobs} at a time) in \
+         {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}",
         done.records.len(),
         done.computed,
         done.records.len() - done.computed,

@@ -51,7 +51,7 @@ pub use findings::findings;
 pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
-pub use reproduce::{reproduce, ReproduceOptions, Reproduction};
+pub use reproduce::{reproduce, reproduce_cell, ReproduceOptions, Reproduction};
 pub use study::{study, study_cell, study_grid, StudyOptions, StudyOutcome};
 
 /// Where a grid is: cells done of the total, the cell now running, time since start.

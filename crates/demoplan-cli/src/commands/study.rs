@@ -3,7 +3,9 @@
 //! to an exit code.
 
 use crate::cli::StudyArgs;
-use crate::commands::reproduce::{experiment_failure, fast_downward, time_limit};
+use crate::commands::reproduce::{
+    cell_command, experiment_failure, fast_downward, print_cell, time_limit,
+};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
@@ -89,28 +91,16 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         children: None,
     };
     if let Some(id) = &args.cell {
-        let record = experiment::study_cell(&options, id).map_err(experiment_failure)?;
-        println!("{}", record.to_json_line());
-        return Ok(ExitCode::SUCCESS);
+        return print_cell(experiment::study_cell(&options, id));
     }
     let jobs = match args.jobs {
         Some(n) => n as usize,
         None => std::thread::available_parallelism().map_or(1, usize::from),
     };
-    let mut options = options;
-    if jobs > 1 {
-        let program = std::env::current_exe().map_err(|e| {
-            Failure::plain(
-                ExitCode::USAGE,
-                format!("-j {jobs}: cannot find this program to run its cells: {e}"),
-            )
-        })?;
-        options.children = Some(experiment::CellCommand {
-            program,
-            args: std::env::args_os().skip(1).collect(),
-            jobs,
-        });
-    }
+    let options = experiment::StudyOptions {
+        children: cell_command(jobs)?,
+        ..options
+    };
     let bar = Bar::new();
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();

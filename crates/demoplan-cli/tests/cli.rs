@@ -330,7 +330,8 @@ fn validate_input_errors_use_the_pddl_exit_codes() {
 }
 
 // ---------------------------------------------------------------------------------------
-// The planner: `demoplan plan` on real benchmark instances, protocol and exit codes.
+// The planner: `demoplan plan` on tasks the tests write, protocol and exit codes (the IPC
+// suite is `tests/ipc.rs`, behind the `ipc` feature).
 
 /// `Plan cost: N` from a log.
 fn logged_number(log: &str, prefix: &str) -> Option<u64> {
@@ -340,86 +341,63 @@ fn logged_number(log: &str, prefix: &str) -> Option<u64> {
         .and_then(|n| n.parse().ok())
 }
 
-/// Each line of `fixtures/quick-instances.txt` names an instance of the benchmark suite
-/// and the searches to run on it; every plan must cost the known optimum and validate.
-#[test]
-fn planner_finds_optimal_validated_plans_on_a_quick_subset_of_every_domain() {
-    let suite = benchmarks::Suite::locate().unwrap();
-    let instances = suite.instances().unwrap();
-    let list = std::fs::read_to_string(fixtures().join("quick-instances.txt")).unwrap();
-    let tmp = tempdir("quick");
-    let mut domains = std::collections::BTreeSet::new();
-    let mut runs = 0;
-    for line in list
-        .lines()
-        .map(|l| l.split('#').next().unwrap_or("").trim())
-        .filter(|l| !l.is_empty())
-    {
-        let (name, searches) = line.split_once(' ').unwrap();
-        let instance = instances
+/// A gripper task written by the test (a robot with two grippers carries `balls` balls
+/// from room a to room b; the state space grows exponentially with the balls), as domain
+/// and problem files in `dir`. The planner tests need no benchmark suite.
+struct Gripper {
+    domain_file: PathBuf,
+    problem_file: PathBuf,
+}
+
+fn gripper(dir: &Path, balls: usize) -> Gripper {
+    const DOMAIN: &str = "(define (domain gripper-typed)
+  (:requirements :strips :typing)
+  (:types room ball gripper)
+  (:predicates (at-robby ?r - room) (at ?b - ball ?r - room) (free ?g - gripper)
+               (carry ?b - ball ?g - gripper))
+  (:action move :parameters (?from ?to - room)
+    :precondition (at-robby ?from)
+    :effect (and (at-robby ?to) (not (at-robby ?from))))
+  (:action pick :parameters (?b - ball ?r - room ?g - gripper)
+    :precondition (and (at ?b ?r) (at-robby ?r) (free ?g))
+    :effect (and (carry ?b ?g) (not (at ?b ?r)) (not (free ?g))))
+  (:action drop :parameters (?b - ball ?r - room ?g - gripper)
+    :precondition (and (carry ?b ?g) (at-robby ?r))
+    :effect (and (at ?b ?r) (free ?g) (not (carry ?b ?g)))))
+";
+    let names: Vec<String> = (1..=balls).map(|i| format!("ball{i}")).collect();
+    let problem = format!(
+        "(define (problem gripper-{balls})\n  (:domain gripper-typed)\n  \
+         (:objects rooma roomb - room left right - gripper {} - ball)\n  \
+         (:init (at-robby rooma) (free left) (free right)\n    {})\n  \
+         (:goal (and {})))\n",
+        names.join(" "),
+        names
             .iter()
-            .find(|i| format!("{}/{}", i.domain, i.name) == name)
-            .unwrap_or_else(|| panic!("{name} is not in optimal_costs.csv"));
-        domains.insert(instance.domain.clone());
-        for search in searches.split_whitespace() {
-            let plan_file = tmp.join("plan");
-            let out = demoplan()
-                .arg("plan")
-                .arg(&instance.domain_file)
-                .arg(&instance.problem_file)
-                .args(["--search", search, "--plan-file"])
-                .arg(&plan_file)
-                .arg("--validate")
-                .output()
-                .unwrap();
-            let log = String::from_utf8_lossy(&out.stdout);
-            assert_eq!(
-                out.status.code(),
-                Some(0),
-                "{name} {search}: {}",
-                transcript(&out)
-            );
-            assert_eq!(
-                logged_number(&log, "Plan cost: "),
-                Some(instance.optimal_cost),
-                "{name} {search}"
-            );
-            assert!(
-                log.contains("Plan valid"),
-                "{name} {search}: not validated\n{log}"
-            );
-            let plan = std::fs::read_to_string(&plan_file).unwrap();
-            assert!(
-                plan.ends_with(&format!(
-                    "; cost = {} (general cost)\n",
-                    instance.optimal_cost
-                )) || plan.ends_with(&format!("; cost = {} (unit cost)\n", instance.optimal_cost)),
-                "{name}: {plan}"
-            );
-            runs += 1;
-        }
-    }
-    let all: std::collections::BTreeSet<String> =
-        instances.iter().map(|i| i.domain.clone()).collect();
-    assert_eq!(
-        domains, all,
-        "the quick list must cover every benchmark domain"
+            .map(|b| format!("(at {b} rooma)"))
+            .collect::<Vec<_>>()
+            .join("\n    "),
+        names
+            .iter()
+            .map(|b| format!("(at {b} roomb)"))
+            .collect::<Vec<_>>()
+            .join(" "),
     );
-    assert!(runs >= all.len());
+    let task = Gripper {
+        domain_file: dir.join("gripper-domain.pddl"),
+        problem_file: dir.join(format!("gripper-{balls}.pddl")),
+    };
+    std::fs::write(&task.domain_file, DOMAIN).unwrap();
+    std::fs::write(&task.problem_file, problem).unwrap();
+    task
 }
 
-fn benchmark(domain: &str, name: &str) -> benchmarks::Instance {
-    benchmarks::Suite::locate()
-        .and_then(|suite| suite.instance(domain, name))
-        .unwrap()
-}
-
-fn plan_run(args: &[&str], instance: &benchmarks::Instance, dir: &Path) -> Output {
+fn plan_run(args: &[&str], task: &Gripper, dir: &Path) -> Output {
     demoplan()
         .current_dir(dir)
         .arg("plan")
-        .arg(&instance.domain_file)
-        .arg(&instance.problem_file)
+        .arg(&task.domain_file)
+        .arg(&task.problem_file)
         .args(args)
         .output()
         .unwrap()
@@ -427,8 +405,8 @@ fn plan_run(args: &[&str], instance: &benchmarks::Instance, dir: &Path) -> Outpu
 
 #[test]
 fn planning_is_deterministic() {
-    let instance = benchmark("blocks", "probBLOCKS-6-2");
     let tmp = tempdir("determinism");
+    let instance = gripper(&tmp, 4);
     let mut seen = Vec::new();
     for _ in 0..2 {
         let out = plan_run(&["--search", "astar(hmax())"], &instance, &tmp);
@@ -583,8 +561,8 @@ fn unsolvable_tasks_exit_11_and_leave_no_plan() {
 
 #[test]
 fn limits_stop_the_search_with_exit_23_and_22_and_statistics() {
-    let instance = benchmark("gripper", "prob08");
     let tmp = tempdir("limits");
+    let instance = gripper(&tmp, 20);
     let stats = tmp.join("stats.json");
     let out = plan_run(
         &[
@@ -2136,10 +2114,11 @@ fn fast_downward_backends_say_clearly_when_it_is_missing() {
 
 #[test]
 fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
-    // `demoplan fmt --stdout FILE...` prints the formatted PDDL: 20 KB for this problem,
+    // `demoplan fmt --stdout FILE...` prints the formatted PDDL: over 20 KB for this problem,
     // 400 KB for twenty of it, far more than a pipe holds (64 KB), so the writer blocks
     // and meets the closed pipe whenever the reader goes away.
-    let problem = benchmark("visitall-opt11-strips", "problem11-full").problem_file;
+    let tmp = tempdir("closed-stdout");
+    let problem = gripper(&tmp, 400).problem_file;
     let mut child = demoplan()
         .args(["fmt", "--stdout"])
         .args(std::iter::repeat_n(&problem, 20))

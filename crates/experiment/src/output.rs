@@ -16,6 +16,16 @@ pub(crate) fn create_dir(path: &Path) -> Result<(), ExperimentError> {
     std::fs::create_dir_all(path).map_err(|e| io_error(path, e))
 }
 
+/// Writes `figure`'s PNG to `path` (as [`write_file`]); a figure that cannot be rendered
+/// is an error naming the file.
+pub(crate) fn write_png(path: &Path, figure: &report::Figure) -> Result<(), ExperimentError> {
+    let png = figure.png().map_err(|e| ExperimentError::Io {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    write_file(path, &png)
+}
+
 /// Writes `bytes` to a temporary file beside `path`, then renames it over `path`.
 pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), ExperimentError> {
     let mut name = path.file_name().unwrap_or_default().to_os_string();

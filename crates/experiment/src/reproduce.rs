@@ -14,7 +14,7 @@ use slim::{FastDownward, MemoryProbe};
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
 use crate::lab::{tower_problem, towers, Lab};
-use crate::output::{condition_fields, create_dir, machine, opt, write_file, write_text};
+use crate::output::{condition_fields, create_dir, machine, opt, write_png, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
 use crate::{run_cell, run_cells, CellCommand, ExperimentError, Progress, Runner};
@@ -280,7 +280,7 @@ pub fn reproduce(
             let figure = report::time_figure(&experiment, &planner, measure);
             let base = format!("figures/{}-time-{planner}", measure.name());
             write_text(&out.join(format!("{base}.svg")), &figure.svg())?;
-            write_file(&out.join(format!("{base}.png")), &figure.png())?;
+            write_png(&out.join(format!("{base}.png")), &figure)?;
             artefacts.push((
                 format!("{base}.svg"),
                 format!(
@@ -293,7 +293,7 @@ pub fn reproduce(
     }
     let figure = report::operators_figure(&experiment.levels);
     write_text(&out.join("figures/operators.svg"), &figure.svg())?;
-    write_file(&out.join("figures/operators.png"), &figure.png())?;
+    write_png(&out.join("figures/operators.png"), &figure)?;
     artefacts.push((
         "figures/operators.svg".into(),
         "Operators per type and priority (as the paper's Figure 3)".into(),
@@ -302,7 +302,7 @@ pub fn reproduce(
         let figure = report::goal_figure(goal, learn::DEFAULT_CUBES);
         let base = format!("figures/goal-{}", goal.number);
         write_text(&out.join(format!("{base}.svg")), &figure.svg())?;
-        write_file(&out.join(format!("{base}.png")), &figure.png())?;
+        write_png(&out.join(format!("{base}.png")), &figure)?;
         artefacts.push((
             format!("{base}.svg"),
             format!("Goal {} (as the paper's Figure 4)", goal.number),

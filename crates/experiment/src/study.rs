@@ -16,7 +16,7 @@ use slim::{FastDownward, MemoryProbe};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
 use crate::lab::Lab;
-use crate::output::{condition_fields, create_dir, machine, write_file, write_text};
+use crate::output::{condition_fields, create_dir, machine, write_png, write_text};
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
 use crate::record::{read_records_for_append, RunRecord};
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
@@ -233,7 +233,7 @@ pub fn study(
             options.time_limit.as_secs_f64(),
         );
         write_text(&out.join(format!("{name}.svg")), &figure.svg())?;
-        write_file(&out.join(format!("{name}.png")), &figure.png())?;
+        write_png(&out.join(format!("{name}.png")), &figure)?;
         figures.push((format!("{name}.svg"), format!("{name}.png"), measure));
     }
     let page = out.join("report.html");

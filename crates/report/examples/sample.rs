@@ -21,7 +21,8 @@ fn figure(
     artefacts: &mut Vec<(String, String)>,
 ) -> std::io::Result<()> {
     write(dir, &format!("{stem}.svg"), fig.svg().as_bytes())?;
-    write(dir, &format!("{stem}.png"), &fig.png())?;
+    let png = fig.png().map_err(std::io::Error::other)?;
+    write(dir, &format!("{stem}.png"), &png)?;
     artefacts.push((format!("{stem}.svg"), caption.to_string()));
     artefacts.push((format!("{stem}.png"), format!("{caption} (PNG)")));
     Ok(())

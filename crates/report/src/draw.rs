@@ -1,12 +1,10 @@
 //! The drawing model: a [`Figure`] is a canvas size and a list of [`Shape`]s in pixel
-//! coordinates (origin top left, y down), drawn in order. It renders to SVG text here and
-//! to a PNG in `raster`; both renderings come from the same shapes, so they agree.
+//! coordinates (origin top left, y down), drawn in order. It renders to SVG text here;
+//! the PNG is that SVG rendered (`render`), so the two agree.
 
 use std::fmt::Write as _;
 
-use crate::font;
-use crate::png;
-use crate::raster::Canvas;
+use crate::render::{self, RenderError, ADVANCE_EM};
 
 /// An opaque sRGB colour.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -73,9 +71,8 @@ pub enum Anchor {
     End,
 }
 
-/// A text label set in the crate's 5x7 bitmap font at an integer `scale` (1 font pixel
-/// = `scale` figure pixels); in SVG it is set in a monospace font of size `10 * scale`,
-/// whose cap height and advance are close to the bitmap's.
+/// A text label at an integer `scale`: set in a monospace font of size `10 * scale`
+/// pixels, in PNGs always the embedded DejaVu Sans Mono (see [`text_width`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Text {
     /// Reference point on the baseline (see `anchor`).
@@ -245,34 +242,29 @@ impl Figure {
         s
     }
 
-    /// The figure rasterised (no anti-aliasing) and encoded as an RGB PNG of
-    /// `width` x `height` pixels.
-    pub fn png(&self) -> Vec<u8> {
-        let canvas = self.raster();
-        png::encode_rgb(canvas.width(), canvas.height(), canvas.pixels())
-    }
-
-    /// The figure rasterised into RGB pixels.
-    pub fn raster(&self) -> Canvas {
-        let mut canvas = Canvas::new(self.width, self.height, Color::WHITE);
-        for shape in &self.shapes {
-            canvas.draw(shape);
-        }
-        canvas
+    /// The figure's SVG rendered with the embedded font (anti-aliased) and encoded as an
+    /// RGB PNG of `width` x `height` pixels.
+    pub fn png(&self) -> Result<Vec<u8>, RenderError> {
+        let rgb = render::rgb(&self.svg(), self.width, self.height)?;
+        render::encode_png(self.width, self.height, &rgb)
     }
 }
 
-/// Width in figure pixels of `text` at `scale` (the bitmap font's metric; also used for
-/// layout of the SVG).
+/// Width in figure pixels of `text` at `scale`: the embedded font's advance per
+/// character, for the layout of labels.
 pub fn text_width(text: &str, scale: u32) -> f64 {
-    f64::from(font::text_width(text) * scale.max(1))
+    text.chars().count() as f64 * f64::from(10 * scale.max(1)) * ADVANCE_EM
 }
 
-/// Escapes text for XML content and double-quoted attributes.
+/// Escapes text for XML content and double-quoted attributes; characters XML 1.0 does
+/// not allow (control characters other than tab and line breaks) become U+FFFD, so that
+/// every figure's SVG is well-formed whatever its labels hold.
 pub fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
+            '\t' | '\n' | '\r' => out.push(c),
+            c if c.is_control() || c == '\u{fffe}' || c == '\u{ffff}' => out.push('\u{fffd}'),
             '&' => out.push_str("&amp;"),
             '<' => out.push_str("&lt;"),
             '>' => out.push_str("&gt;"),
@@ -440,5 +432,9 @@ mod tests {
     #[test]
     fn text_is_escaped() {
         assert_eq!(escape(r#"a<b & "c">"#), "a&lt;b &amp; &quot;c&quot;&gt;");
+        assert_eq!(
+            escape("a\u{1}b\u{7f}\u{fffe}"),
+            "a\u{fffd}b\u{fffd}\u{fffd}"
+        );
     }
 }

@@ -12,27 +12,27 @@
 //! - [`report_html`]: one self-contained page with the paper's Tables 3 and 4
 //!   ([`search_time_table`], also as Markdown), the figures, the notes and every file.
 //!
-//! Figures use a small drawing model ([`Figure`], [`Shape`]) rendered to SVG and
-//! rasterised by the crate itself (a 5x7 bitmap font, scanline filling, its own PNG
-//! encoder), so no system fonts or drawing libraries are involved and the same input
-//! gives the same bytes.
+//! Figures use a small drawing model ([`Figure`], [`Shape`]) rendered to SVG; their
+//! PNGs are that SVG rendered by resvg with one embedded font (DejaVu Sans Mono) and no
+//! system fonts, and encoded by the `png` crate, so the same input gives the same bytes
+//! on any machine.
 //!
 //! ```
 //! use report::{goal_figure, Goal};
 //! let goal = Goal { number: 1, tower: vec!["cube_1".into(), "cube_2".into()] };
 //! let figure = goal_figure(&goal, 6);
 //! assert!(figure.svg().contains("Goal 1"));
-//! assert!(figure.png().starts_with(&report::png::SIGNATURE));
+//! let png = figure.png()?;
+//! assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+//! # Ok::<(), report::RenderError>(())
 //! ```
 
 mod draw;
-mod font;
 mod html;
 mod model;
 pub mod paper;
 mod plots;
-pub mod png;
-mod raster;
+mod render;
 
 pub use draw::{pt, text_width, Anchor, Color, Figure, Point, Shape, Stroke, Text};
 pub use html::{
@@ -48,4 +48,4 @@ pub use plots::{
     decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,
     time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,
 };
-pub use raster::Canvas;
+pub use render::RenderError;

@@ -25,9 +25,6 @@ pub const SEARCH_ENGINES: &[&str] = &["astar"];
 /// The heuristics demoplan computes.
 pub const HEURISTICS: &[&str] = &["blind", "hmax", "lmcut", "pdb", "ipdb", "cpdbs"];
 
-/// Heuristics Fast Downward has that demoplan will support, but does not yet.
-pub const PLANNED_HEURISTICS: &[&str] = &[];
-
 /// Fast Downward's aliases that demoplan knows: name and search string.
 pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
 
@@ -314,12 +311,6 @@ pub enum ConfigError {
         /// The name given.
         name: String,
     },
-    /// A heuristic Fast Downward has and demoplan does not yet.
-    #[error("heuristic `{name}` is not yet supported by demoplan\n{}", known())]
-    NotYetSupported {
-        /// The name given.
-        name: String,
-    },
     /// A required argument is missing.
     #[error("`{function}` needs the argument `{argument}`\n{}", known())]
     MissingArgument {
@@ -348,13 +339,8 @@ pub enum ConfigError {
 
 /// The list of known names that ends every error message.
 fn known() -> String {
-    let planned = if PLANNED_HEURISTICS.is_empty() {
-        String::new()
-    } else {
-        format!(" (planned: {})", PLANNED_HEURISTICS.join(", "))
-    };
     format!(
-        "known search engines: {}\nknown heuristics: {}{planned}",
+        "known search engines: {}\nknown heuristics: {}",
         SEARCH_ENGINES.join(", "),
         HEURISTICS.join(", "),
     )
@@ -407,11 +393,6 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
         "pdb" => return interpret_pdb(term),
         "ipdb" => return Ok(HeuristicConfig::Ipdb(interpret_ipdb(term, true)?)),
         "cpdbs" => return interpret_cpdbs(term),
-        name if PLANNED_HEURISTICS.contains(&name) => {
-            return Err(ConfigError::NotYetSupported {
-                name: name.to_string(),
-            })
-        }
         name if SEARCH_ENGINES.contains(&name) => {
             return Err(ConfigError::InvalidArgument {
                 function: "astar".into(),
@@ -952,11 +933,10 @@ mod tests {
     fn aliases() {
         assert_eq!(alias("seq-opt-lmcut"), Some("astar(lmcut())"));
         assert_eq!(alias("seq-opt-blind"), None);
-        // Every alias parses, or names a heuristic that is planned.
+        // Every alias parses.
         for (_, search) in ALIASES {
-            match parse_search(search) {
-                Ok(_) | Err(ConfigError::NotYetSupported { .. }) => {}
-                Err(e) => panic!("{search}: {e}"),
+            if let Err(e) = parse_search(search) {
+                panic!("{search}: {e}");
             }
         }
     }

@@ -73,16 +73,21 @@ mod segmented;
 pub mod state;
 mod successor;
 
+/// Random valid tasks for the unit tests' property tests, the integration tests' own.
+#[cfg(test)]
+#[path = "../tests/common/mod.rs"]
+mod random_tasks;
+
 pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
 pub use config::{
     alias, parse_search, ConfigError, Engine, HeuristicConfig, PatternCollectionConfig,
-    SearchConfig, ALIASES, HEURISTICS, PLANNED_HEURISTICS, SEARCH_ENGINES,
+    SearchConfig, ALIASES, HEURISTICS, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
 pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig, DEFAULT_SEED};
-pub use lmcut::{tie_breaking_order, LmCut, SupporterRule};
+pub use lmcut::{tie_breaking_order, LmCut};
 pub use pdb::{PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};

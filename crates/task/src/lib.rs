@@ -26,7 +26,6 @@
 //! # Ok::<(), task::TaskError>(())
 //! ```
 
-pub mod mersenne_twister;
 pub mod sas_file;
 
 use std::fmt;

@@ -37,8 +37,8 @@
 
 use std::collections::VecDeque;
 
+use rand_mt::Mt;
 use rustc_hash::{FxHashMap, FxHashSet};
-use task::mersenne_twister::MersenneTwister;
 
 use crate::ground::{AtomId, Grounding};
 use crate::model::{Arg, Model, Pattern, PredId};
@@ -466,12 +466,13 @@ impl Candidate {
 }
 
 /// Python's `random.Random`: `randrange(n)` as CPython's `_randbelow_with_getrandbits`.
-struct PythonRandom(MersenneTwister);
+struct PythonRandom(Mt);
 
 impl PythonRandom {
     /// `random.Random(seed)` for a seed below 2^32.
     fn new(seed: u32) -> PythonRandom {
-        PythonRandom(MersenneTwister::from_key(&[seed]))
+        // CPython seeds an integer below 2^32 with init_by_array([seed]).
+        PythonRandom(Mt::new_with_key([seed]))
     }
 
     /// An integer in `[0, n)`, `0 < n < 2^32`: `k`-bit draws (the top bits of one
@@ -860,6 +861,24 @@ mod tests {
             .map(|&n| r.randrange(n))
             .collect();
         assert_eq!(draws, [0, 1, 1, 0, 0, 73, 313, 0, 0, 0, 0]);
+    }
+
+    /// The reference implementation's `mt19937ar.out`: the first outputs after
+    /// `init_by_array({0x123, 0x234, 0x345, 0x456})`, the seeding Python's uses.
+    #[test]
+    fn seeding_by_key_is_the_reference_implementations() {
+        let mut rng = Mt::new_with_key([0x123, 0x234, 0x345, 0x456]);
+        let first: Vec<u32> = (0..5).map(|_| rng.next_u32()).collect();
+        assert_eq!(
+            first,
+            [
+                1_067_595_299,
+                955_945_823,
+                477_289_528,
+                4_107_218_783,
+                4_228_976_476
+            ]
+        );
     }
 
     fn balancing(p: &Part, own: &[Term], other: &Atom) -> Vec<Part> {

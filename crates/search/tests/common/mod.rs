@@ -1,209 +1,154 @@
-//! Test support shared by the integration tests: slow, obviously correct references.
+//! Random valid tasks for property tests, shared by the integration tests and the
+//! crate's unit tests (`src/lib.rs` includes this file under `cfg(test)`).
 
-use task::{Fact, Task};
+#![allow(dead_code)] // each test binary uses its part
 
-/// LM-cut, recomputing h^max from scratch each round with plain fixpoint iterations:
-/// slow and obviously correct. Facts are numbered as in `LmCut` (variable offsets, then the
-/// always-true fact, then the goal fact). Supporters follow the same tie-breaking rules,
-/// stated here as plainly as possible:
-/// - an operator's preconditions are ordered by `search::tie_breaking_order`;
-/// - round 1: the precondition reached last (`first_supporters`);
-/// - later rounds: the supporter of the round before while it still has the highest
-///   h^max, else the first precondition of highest h^max;
-/// - while the goal zone is marked (depth first from the goal fact, achievers in operator
-///   order), a zero-cost operator's supporter becomes the first precondition tying with it
-///   that has no zero-cost achiever or is already in the zone.
-pub fn reference_lmcut(task: &Task, state: &[u32]) -> Option<u64> {
-    const INF: u64 = u64::MAX;
-    let mut offset = Vec::new();
-    let mut n = 0usize;
-    for v in &task.variables {
-        offset.push(n);
-        n += v.domain_size() as usize;
-    }
-    let (fact_i, fact_g) = (n, n + 1);
-    let fact = |f: &Fact| offset[f.var.index()] + f.value as usize;
-    let rank = task.atom_order_ranks();
-    let mut ops: Vec<(Vec<usize>, Vec<usize>, u64)> = task
-        .operators
+use proptest::prelude::*;
+use task::{Fact, Operator, Task, VarId, Variable};
+
+/// A partial assignment over variables of these domain sizes.
+fn partial(sizes: &[u32], density: f64) -> impl Strategy<Value = Vec<Fact>> {
+    let per_var: Vec<_> = sizes
         .iter()
-        .map(|o| {
-            let mut pre: Vec<usize> = search::tie_breaking_order(o, &rank).map(fact).collect();
-            if pre.is_empty() {
-                pre.push(fact_i);
-            }
-            (pre, o.effects.iter().map(fact).collect(), task.cost(o))
+        .map(|&s| proptest::option::weighted(density, 0..s))
+        .collect();
+    per_var.prop_map(|values| {
+        values
+            .into_iter()
+            .enumerate()
+            .filter_map(|(v, x)| x.map(|x| Fact::new(VarId(v as u32), x)))
+            .collect()
+    })
+}
+
+/// What an operator does with one variable.
+#[derive(Debug, Clone)]
+enum Role {
+    Untouched,
+    /// A precondition the operator leaves alone.
+    Prevail(u32),
+    /// An effect, maybe with a precondition on the old value.
+    Change(Option<u32>, u32),
+}
+
+/// An operator over variables of these domain sizes, shaped like a transition in a
+/// domain transition graph, so that operators chain into longer plans.
+fn operator(sizes: &[u32]) -> impl Strategy<Value = (Vec<Fact>, Vec<Fact>)> {
+    let roles: Vec<_> = sizes
+        .iter()
+        .map(|&s| {
+            prop_oneof![
+                8 => Just(Role::Untouched),
+                1 => (0..s).prop_map(Role::Prevail),
+                6 => (proptest::option::weighted(0.6, 0..s), 0..s).prop_map(|(p, e)| Role::Change(p, e)),
+            ]
         })
         .collect();
-    let mut goal: Vec<usize> = task.goal.iter().map(fact).collect();
-    if goal.is_empty() {
-        goal.push(fact_i);
-    }
-    ops.push((goal, vec![fact_g], 0));
-    let mut in_state = vec![false; n + 2];
-    for (var, &value) in state.iter().enumerate() {
-        in_state[offset[var] + value as usize] = true;
-    }
-    in_state[fact_i] = true;
-    let mut supporter = first_supporters(&ops, state, &offset, fact_i);
-    let mut h = 0;
-    loop {
-        let mut hm: Vec<u64> = in_state.iter().map(|&t| if t { 0 } else { INF }).collect();
-        loop {
-            let mut changed = false;
-            for (pre, eff, c) in &ops {
-                if pre.iter().all(|&p| hm[p] != INF) {
-                    let v = c + pre.iter().map(|&p| hm[p]).max().unwrap();
-                    for &e in eff {
-                        if v < hm[e] {
-                            hm[e] = v;
-                            changed = true;
-                        }
-                    }
+    roles.prop_map(|roles| {
+        let (mut pre, mut eff) = (Vec::new(), Vec::new());
+        for (v, role) in roles.into_iter().enumerate() {
+            let var = VarId(v as u32);
+            match role {
+                Role::Untouched => {}
+                Role::Prevail(x) => pre.push(Fact::new(var, x)),
+                Role::Change(p, e) => {
+                    pre.extend(p.map(|x| Fact::new(var, x)));
+                    eff.push(Fact::new(var, e));
                 }
             }
-            if !changed {
-                break;
-            }
         }
-        if hm[fact_g] == INF {
-            return None;
-        }
-        if hm[fact_g] == 0 {
-            return Some(h);
-        }
-        for (o, (pre, _, _)) in ops.iter().enumerate() {
-            if pre.iter().any(|&p| hm[p] == INF) {
-                continue;
-            }
-            let best = pre.iter().map(|&p| hm[p]).max().unwrap();
-            let keep = supporter[o].is_some_and(|s| hm[s] == best);
-            if !keep {
-                supporter[o] = pre.iter().copied().find(|&p| hm[p] == best);
-            }
-        }
-        let mut zone = vec![false; n + 2];
-        mark_zone(fact_g, &ops, &hm, &mut supporter, &mut zone);
-        let enters_zone = |eff: &Vec<usize>, zone: &[bool]| eff.iter().any(|&e| zone[e]);
-        let mut reached = in_state.clone();
-        loop {
-            let mut changed = false;
-            for (o, (_, eff, _)) in ops.iter().enumerate() {
-                // An operator entering the goal zone is in the cut; its other effects are
-                // beyond the cut and not reached.
-                if supporter[o].is_some_and(|s| reached[s]) && !enters_zone(eff, &zone) {
-                    for &e in eff {
-                        if !reached[e] {
-                            reached[e] = true;
-                            changed = true;
-                        }
-                    }
-                }
-            }
-            if !changed {
-                break;
-            }
-        }
-        let cut: Vec<usize> = (0..ops.len())
-            .filter(|&o| supporter[o].is_some_and(|s| reached[s]) && enters_zone(&ops[o].1, &zone))
-            .collect();
-        let m = cut.iter().map(|&o| ops[o].2).min().unwrap();
-        assert!(m > 0, "a cut of zero cost");
-        h += m;
-        for &o in &cut {
-            ops[o].2 -= m;
-        }
-    }
+        (pre, eff)
+    })
 }
 
-/// Round 1's supporters: for each operator, the precondition reached last by a Dijkstra
-/// exploration whose queue keeps a stack per cost (of the facts queued at one cost, the
-/// last queued comes out first). It starts with the state's facts in variable order, then
-/// the always-true fact; a fact coming out triggers the operators it is a precondition of
-/// in index order, and an operator whose preconditions are all reached queues its effects
-/// in its order where they get cheaper. This is how both LmCut and Fast Downward explore.
-fn first_supporters(
-    ops: &[(Vec<usize>, Vec<usize>, u64)],
-    state: &[u32],
-    offset: &[usize],
-    fact_i: usize,
-) -> Vec<Option<usize>> {
-    use std::collections::BTreeMap;
-    let facts = fact_i + 2;
-    let mut cost = vec![u64::MAX; facts];
-    let mut unsatisfied: Vec<usize> = ops.iter().map(|(pre, _, _)| pre.len()).collect();
-    let mut precondition_of: Vec<Vec<usize>> = vec![Vec::new(); facts];
-    for (o, (pre, _, _)) in ops.iter().enumerate() {
-        for &p in pre {
-            precondition_of[p].push(o);
-        }
-    }
-    let mut queue: BTreeMap<u64, Vec<usize>> = BTreeMap::new();
-    let push = |queue: &mut BTreeMap<u64, Vec<usize>>, cost: &mut [u64], f: usize, c: u64| {
-        if c < cost[f] {
-            cost[f] = c;
-            queue.entry(c).or_default().push(f);
-        }
+/// Random valid tasks: 2-6 variables of domain sizes 2-4, 1-12 operators with costs
+/// 0-3 (zero costs included), with or without action costs. Most goals are drawn from
+/// the end of a random walk from the initial state, so that most tasks are solvable and
+/// need several steps; the others are random partial assignments.
+pub fn tasks() -> impl Strategy<Value = Task> {
+    proptest::collection::vec(2u32..=4, 2..=6).prop_flat_map(|sizes| {
+        let op = (operator(&sizes), 0u64..=3).prop_map(|((pre, eff), cost)| (pre, eff, cost));
+        let init: Vec<_> = sizes.iter().map(|&s| 0..s).collect();
+        (
+            Just(sizes.clone()),
+            proptest::collection::vec(op, 1..=12),
+            init,
+            partial(&sizes, 0.4),
+            proptest::bool::weighted(0.7),
+            (proptest::bool::weighted(0.8), any::<u64>(), 1usize..=10),
+        )
+            .prop_map(
+                |(sizes, ops, initial_state, goal, use_costs, (walk, seed, steps))| {
+                    let mut task = Task {
+                        variables: sizes
+                            .iter()
+                            .enumerate()
+                            .map(|(i, &s)| Variable {
+                                name: format!("var{i}"),
+                                value_names: (0..s).map(|v| format!("v{v}")).collect(),
+                            })
+                            .collect(),
+                        mutexes: vec![],
+                        initial_state,
+                        goal,
+                        operators: ops
+                            .into_iter()
+                            .enumerate()
+                            .map(|(i, (preconditions, effects, cost))| Operator {
+                                name: format!("op{i}"),
+                                preconditions,
+                                effects,
+                                cost,
+                            })
+                            .collect(),
+                        use_costs,
+                    };
+                    if walk {
+                        if let Some(goal) = random_walk_goal(&task, seed, steps) {
+                            task.goal = goal;
+                        }
+                    }
+                    task.validate().unwrap();
+                    task
+                },
+            )
+    })
+}
+
+/// A goal drawn from the state a random walk of up to `steps` state-changing steps ends
+/// in: the facts the walk changed and some others; `None` if the walk changed nothing.
+fn random_walk_goal(task: &Task, mut seed: u64, steps: usize) -> Option<Vec<Fact>> {
+    let mut next = |n: usize| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 33) as usize % n.max(1)
     };
-    for (var, &value) in state.iter().enumerate() {
-        push(&mut queue, &mut cost, offset[var] + value as usize, 0);
-    }
-    push(&mut queue, &mut cost, fact_i, 0);
-    let mut supporter = vec![None; ops.len()];
-    while let Some(mut entry) = queue.first_entry() {
-        let c = *entry.key();
-        let f = entry.get_mut().pop().unwrap();
-        if entry.get().is_empty() {
-            entry.remove();
-        }
-        if c > cost[f] {
-            continue;
-        }
-        for &o in &precondition_of[f] {
-            unsatisfied[o] -= 1;
-            if unsatisfied[o] == 0 {
-                supporter[o] = Some(f);
-                for &e in &ops[o].1 {
-                    push(&mut queue, &mut cost, e, c + ops[o].2);
-                }
-            }
-        }
-    }
-    supporter
-}
-
-/// Marks the goal zone depth first from `fact`, breaking supporter ties of zero-cost
-/// achievers on the way.
-fn mark_zone(
-    fact: usize,
-    ops: &[(Vec<usize>, Vec<usize>, u64)],
-    hm: &[u64],
-    supporter: &mut [Option<usize>],
-    zone: &mut [bool],
-) {
-    if zone[fact] {
-        return;
-    }
-    zone[fact] = true;
-    for o in 0..ops.len() {
-        let (pre, eff, cost) = &ops[o];
-        if *cost != 0 || !eff.contains(&fact) {
-            continue;
-        }
-        let Some(current) = supporter[o] else {
-            continue;
-        };
-        let target = hm[current];
-        let no_zero_cost_achiever =
-            |p: usize| !ops.iter().any(|(_, e, c)| *c == 0 && e.contains(&p));
-        if let Some(p) = pre
+    let mut state = task.initial_state.clone();
+    for _ in 0..steps {
+        let applicable: Vec<&Operator> = task
+            .operators
             .iter()
-            .copied()
-            .find(|&p| hm[p] == target && (no_zero_cost_achiever(p) || zone[p]))
-        {
-            supporter[o] = Some(p);
+            .filter(|op| {
+                task.is_applicable(op, &state)
+                    && op.effects.iter().any(|f| state[f.var.index()] != f.value)
+            })
+            .collect();
+        if applicable.is_empty() {
+            break;
         }
-        let s = supporter[o].unwrap_or(current);
-        mark_zone(s, ops, hm, supporter, zone);
+        for f in &applicable[next(applicable.len())].effects {
+            state[f.var.index()] = f.value;
+        }
     }
+    if state == task.initial_state {
+        return None;
+    }
+    let goal = state
+        .iter()
+        .enumerate()
+        .filter(|&(v, &x)| x != task.initial_state[v] || next(3) == 0)
+        .map(|(v, &x)| Fact::new(VarId(v as u32), x))
+        .collect();
+    Some(goal)
 }

@@ -1,22 +1,13 @@
 //! `demoplan execute DOMAIN PROBLEM PLAN`: the execution check in the cube world, step
 //! by step, with the plan and poses as JSON and the frames as a recording on request.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
+use crate::cli::ExecuteArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 use crate::output::{write_atomically, write_atomically_with};
-
-/// The arguments of `execute`.
-#[derive(Debug)]
-pub struct ExecuteArgs {
-    pub domain: PathBuf,
-    pub problem: PathBuf,
-    pub plan: PathBuf,
-    pub json: Option<PathBuf>,
-    pub frames: Option<PathBuf>,
-}
 
 pub fn run(args: ExecuteArgs) -> Result<ExitCode, Failure> {
     let task = input::read_task(&args.domain, &args.problem)?;

@@ -2,25 +2,15 @@
 //! recording in the native format with its ground truth beside it, and a manifest.
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use serde_json::json;
 
+use crate::cli::SimulateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 use crate::output::{write_atomically, write_atomically_with};
-
-/// The command line of `simulate`.
-#[derive(Debug)]
-pub struct SimulateArgs {
-    pub participants: u32,
-    pub per_participant: u32,
-    pub seed: u64,
-    pub out: PathBuf,
-    pub params: Option<PathBuf>,
-    pub cubes: Option<u32>,
-}
 
 /// Name of the manifest written beside the recordings.
 pub const MANIFEST: &str = "simulation.json";

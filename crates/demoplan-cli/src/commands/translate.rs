@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::cli::TranslateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::{input, output};
@@ -90,8 +91,9 @@ pub fn trivially_unsolvable_task() -> task::Task {
     }
 }
 
-pub fn run(files: &[PathBuf], sas_file: &Path) -> Result<ExitCode, Failure> {
-    let (domain, problem) = domain_and_problem(files)?;
+pub fn run(args: TranslateArgs) -> Result<ExitCode, Failure> {
+    let (domain, problem) = domain_and_problem(&args.files)?;
+    let sas_file = &args.sas_file;
     let (task, code) = match translate_files(&domain, &problem)? {
         Translated::Task(task) => (task, ExitCode::SUCCESS),
         Translated::Unsolvable => (trivially_unsolvable_task(), ExitCode::UNSOLVABLE),

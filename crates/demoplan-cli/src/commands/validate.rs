@@ -5,11 +5,21 @@ use std::path::{Path, PathBuf};
 
 use validate::{GroundLiteral, Reason, Report, Verdict};
 
+use crate::cli::ValidateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 
-pub fn run(domain: &Path, problem: &Path, plans: &[PathBuf]) -> Result<ExitCode, Failure> {
+pub fn run(args: ValidateArgs) -> Result<ExitCode, Failure> {
+    validate_plans(&args.domain, &args.problem, &args.plans)
+}
+
+/// Validates each plan file, printing VAL's report; the exit code counts invalid plans.
+pub fn validate_plans(
+    domain: &Path,
+    problem: &Path,
+    plans: &[PathBuf],
+) -> Result<ExitCode, Failure> {
     let task = input::read_task(domain, problem)?;
     // Every plan file is read before any is judged: a missing one is a command line
     // mistake (36), not an invalid plan.

@@ -12,7 +12,7 @@
 //! Frames are 90 per second; a cube in a closed gripper moves with it, a released cube
 //! drops onto what is below. The [`ExecutionReport`] says per step whether its effects
 //! held (and if not, which, with the grounded facts), where hands and cubes ended, and
-//! whether the goal holds in the final grounded state; [`export`] writes the plan with
+//! whether the goal holds in the final grounded state (as text: [`ExecutionReport::text`]); [`export`] writes the plan with
 //! poses as JSON for robot execution frameworks (`docs/execution.md`).
 //!
 //! ```
@@ -35,6 +35,7 @@
 //! let report = cubeworld::execute(&domain, &problem, &plan).unwrap();
 //! assert!(report.steps[0].ok());
 //! assert!(report.goal.reached);
+//! assert!(report.text().ends_with("ok\ngoal reached\n"), "{}", report.text());
 //! ```
 
 mod execute;
@@ -42,6 +43,7 @@ mod export;
 pub mod geometry;
 pub mod motion;
 mod plan;
+mod report_text;
 mod symbolic;
 pub mod world;
 

@@ -40,3 +40,10 @@ impl ExitCode {
     /// with the same code.
     pub const OUTPUT_CLOSED: ExitCode = ExitCode(141);
 }
+
+impl From<ExitCode> for std::process::ExitCode {
+    /// Exit codes are 0 to 255 (the validator's count of invalid plans is capped there).
+    fn from(code: ExitCode) -> std::process::ExitCode {
+        std::process::ExitCode::from(u8::try_from(code.0).unwrap_or(u8::MAX))
+    }
+}

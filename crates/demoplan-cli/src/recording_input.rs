@@ -5,8 +5,7 @@
 use std::fmt;
 use std::fs::File;
 use std::io::{BufRead, BufReader, Read};
-use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
+use std::path::Path;
 
 use miette::{Diagnostic, LabeledSpan, MietteError, SourceCode, SourceSpan, SpanContents};
 
@@ -15,18 +14,6 @@ use crate::exit::ExitCode;
 
 /// Read buffer for recordings: large, so that reading is not a system call per frame.
 const BUFFER: usize = 1 << 20;
-
-/// The mapping file given with `--mapping`, for every source opened by [`open`]. Set
-/// once by `main` before a command runs, so the commands that read recordings take
-/// Unity logs without each passing the mapping down.
-static MAPPING: OnceLock<PathBuf> = OnceLock::new();
-
-/// Uses the mapping file at `path` (if any) for sources opened from now on.
-pub fn use_mapping(path: Option<PathBuf>) {
-    if let Some(p) = path {
-        let _ = MAPPING.set(p);
-    }
-}
 
 /// What a file on the command line holds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -78,7 +65,7 @@ pub fn source_kind(path: &Path) -> Result<SourceKind, Failure> {
 /// defaults, or the defaults alone. A malformed file is an input error (31) naming its
 /// line and key.
 pub fn mapping(path: Option<&Path>, format: import::Format) -> Result<import::Mapping, Failure> {
-    let Some(path) = path.or(MAPPING.get().map(PathBuf::as_path)) else {
+    let Some(path) = path else {
         return Ok(import::Mapping::default_for(format));
     };
     let text = crate::input::read_text(path)?;
@@ -125,12 +112,16 @@ pub fn import_failure(path: &Path, error: &import::ImportError) -> Failure {
     }
 }
 
-/// Opens a recording and reads its header. A Unity log (told by its content) is imported
-/// into memory first, with the `--mapping` file or the defaults. A missing file is a
-/// command line error (36); a malformed header or source an input error (31).
-pub fn open(path: &Path) -> Result<recording::Reader<Box<dyn BufRead>>, Failure> {
+/// Opens a recording and reads its header. A Unity log or a bag (told by its content)
+/// is imported into memory first, with the `--mapping` file or the format's defaults.
+/// A missing file is a command line error (36); a malformed header or source an input
+/// error (31).
+pub fn open(
+    path: &Path,
+    mapping_file: Option<&Path>,
+) -> Result<recording::Reader<Box<dyn BufRead>>, Failure> {
     if let SourceKind::Bag(format) = source_kind(path)? {
-        let mapping = mapping(None, format)?;
+        let mapping = mapping(mapping_file, format)?;
         let id = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
@@ -143,7 +134,7 @@ pub fn open(path: &Path) -> Result<recording::Reader<Box<dyn BufRead>>, Failure>
         return recording::Reader::new(input).map_err(|e| recording_failure(path, &e));
     }
     if source_kind(path)? == SourceKind::Unity {
-        let mapping = mapping(None, import::Format::Unity)?;
+        let mapping = mapping(mapping_file, import::Format::Unity)?;
         let id = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())

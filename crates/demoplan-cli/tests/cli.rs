@@ -1004,7 +1004,8 @@ fn segment_classify_and_timeline_on_a_simulated_demonstration() {
         .unwrap();
     assert_eq!(timeline.status.code(), Some(0), "{}", transcript(&timeline));
     let svg = std::fs::read_to_string(tmp.join("p01-d01.svg")).unwrap();
-    assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+    // The timeline is a `report` figure: a standalone SVG document, XML prolog first.
+    assert!(svg.starts_with("<?xml") && svg.contains("<svg") && svg.trim_end().ends_with("</svg>"));
     for label in [
         "left_hand",
         "right_hand",

@@ -15,6 +15,9 @@
 //! - [`operator_subset`] and [`levels`] are the paper's `OperatorSubset` and the levels
 //!   of its Algorithm 1; [`domain`] and [`problem`] write PDDL through the `pddl` crate.
 //!
+//! - [`segment_reader`] is the pipeline from frames to segments (grounding, then
+//!   segmentation), the one every command runs; [`timeline`] draws its result.
+//!
 //! ```
 //! use learn::{cost, Library};
 //! assert_eq!(cost(100, 1, 3), 67); // ceil(100 * (1 - 1/3))
@@ -25,8 +28,10 @@ mod cards;
 mod domain;
 mod hash;
 mod library;
+mod listing;
 mod operator;
 mod pipeline;
+mod timeline;
 
 pub use cards::{cards_markdown, cards_text, domain_text, summary_table};
 pub use domain::{
@@ -39,4 +44,8 @@ pub use library::{
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION, TYPE_ORDER,
 };
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
-pub use pipeline::{activities, add_frames, recording_hash, segment_frames, Grouping, Segmented};
+pub use pipeline::{
+    activities, add_frames, recording_hash, segment_frames, segment_reader, segment_with, Grouping,
+    Observer, Segmented,
+};
+pub use timeline::{activity_color, timeline, Signals};

@@ -1,44 +1,120 @@
-//! Grounding and segmentation of frames already in memory (simulated demonstrations,
-//! tests); the command line streams files through the same stages.
+//! Grounding and segmentation of a recording, the one copy of that pipeline: frames from
+//! a reader (a file of any length, streamed) or from memory (simulated demonstrations,
+//! tests) go through the `Grounder` into the `Segmenter`.
 
-use grounding::{FactSpace, Grounder, GroundingConfig};
+use std::convert::Infallible;
+use std::io::BufRead;
+
+use grounding::{FactSpace, GroundedFrame, Grounder, GroundingConfig};
 use recording::{Frame, Header};
-use segment::{Activity, ActivityTree, Segment, Segmenter};
+use segment::{Activity, ActivityTree, Segment, Segmenter, TableSegments};
 
 use crate::hash::StableHasher;
 use crate::library::{Added, Library, RecordingInfo};
 
-/// A recording's fact space and segments.
+/// A recording grounded and segmented.
 #[derive(Debug, Clone)]
 pub struct Segmented {
+    /// The recording's header (for an ARFF table, the one its objects make).
+    pub header: Header,
     /// The facts of its scene.
     pub space: FactSpace,
     /// Its segments, in the order they ended.
     pub segments: Vec<Segment>,
     /// Number of frames.
     pub frames: u64,
+    /// Seconds from the first frame to the last.
+    pub duration: f64,
 }
 
-/// Grounds and segments frames of a recording with this header.
+impl Segmented {
+    /// An ARFF hand-state table's segments, with the header its objects make.
+    pub fn from_table(header: Header, table: TableSegments) -> Segmented {
+        Segmented {
+            header,
+            space: table.space,
+            segments: table.segments,
+            frames: table.frames,
+            duration: table.duration,
+        }
+    }
+}
+
+/// What a caller sees while a recording is segmented: every frame read with the grounder
+/// after it (its signals, for the timeline), and every grounded frame when it is final.
+pub trait Observer {
+    /// A frame was read and pushed into the grounder.
+    fn frame(&mut self, _frame: &Frame, _grounder: &Grounder) {}
+    /// A frame left the grounder, final.
+    fn grounded(&mut self, _frame: &GroundedFrame<'_>) {}
+}
+
+/// Sees nothing.
+impl Observer for () {}
+
+/// Grounds and segments frames drawn by `next` (which fills the frame and says whether
+/// there was one) of a recording with this header: the pipeline both [`segment_reader`]
+/// and [`segment_frames`] run. Memory is bounded by the grounder's window and the
+/// segments, whatever the number of frames.
+pub fn segment_with<E>(
+    header: &Header,
+    mut next: impl FnMut(&mut Frame) -> Result<bool, E>,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+    observer: &mut dyn Observer,
+) -> Result<Segmented, E> {
+    let mut grounder = Grounder::new(header, config);
+    let hands = grounder.space().hands().to_vec();
+    let mut segmenter = Segmenter::new(&hands, tree.clone(), config.min_duration);
+    let mut frame = Frame::default();
+    let (mut frames, mut first, mut last) = (0u64, None, 0.0);
+    while next(&mut frame)? {
+        frames += 1;
+        first.get_or_insert(frame.time);
+        last = frame.time;
+        grounder.push(&frame, &mut |g| {
+            segmenter.push_grounded(g);
+            observer.grounded(g);
+        });
+        observer.frame(&frame, &grounder);
+    }
+    grounder.finish(&mut |g| {
+        segmenter.push_grounded(g);
+        observer.grounded(g);
+    });
+    Ok(Segmented {
+        header: header.clone(),
+        space: grounder.space().clone(),
+        segments: segmenter.finish(),
+        frames,
+        duration: last - first.unwrap_or(last),
+    })
+}
+
+/// Grounds and segments a recording read a frame at a time (its header already read).
+pub fn segment_reader<R: BufRead>(
+    reader: &mut recording::Reader<R>,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+    observer: &mut dyn Observer,
+) -> Result<Segmented, recording::ReadError> {
+    let header = reader.header().clone();
+    segment_with(&header, |f| reader.read_frame(f), config, tree, observer)
+}
+
+/// Grounds and segments frames of a recording with this header, held in memory.
 pub fn segment_frames(
     header: &Header,
     frames: impl IntoIterator<Item = Frame>,
     config: &GroundingConfig,
     tree: &ActivityTree,
 ) -> Segmented {
-    let mut grounder = Grounder::new(header, config);
-    let hands = grounder.space().hands().to_vec();
-    let mut segmenter = Segmenter::new(&hands, tree.clone(), config.min_duration);
-    let mut count = 0;
-    for frame in frames {
-        count += 1;
-        grounder.push(&frame, &mut |g| segmenter.push_grounded(g));
-    }
-    grounder.finish(&mut |g| segmenter.push_grounded(g));
-    Segmented {
-        space: grounder.space().clone(),
-        segments: segmenter.finish(),
-        frames: count,
+    let mut frames = frames.into_iter();
+    let next =
+        |f: &mut Frame| -> Result<bool, Infallible> { Ok(frames.next().map(|x| *f = x).is_some()) };
+    match segment_with(header, next, config, tree, &mut ()) {
+        Ok(segmented) => segmented,
+        Err(never) => match never {},
     }
 }
 

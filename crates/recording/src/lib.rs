@@ -8,6 +8,9 @@
 //! by [`EntityId`]. Conventions follow ROS REP 103: metres, seconds, right-handed, z up,
 //! quaternions written (x, y, z, w).
 //!
+//! [`Summary`] gathers what a recording holds (timing, gaps, fields present) a frame at a
+//! time and renders it for people.
+//!
 //! [`Reader`] streams: it reads the header when made and then one frame at a time, so a
 //! recording of any length is read in bounded memory. Errors ([`ReadError`]) name the
 //! line, the column and the field. [`Writer`] writes the same format and refuses frames
@@ -54,6 +57,7 @@ mod error;
 mod model;
 mod parser;
 mod reader;
+mod summary;
 mod writer;
 
 pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_NAME_LEN};
@@ -63,6 +67,7 @@ pub use model::{
     Vec3,
 };
 pub use reader::Reader;
+pub use summary::{Summary, GAP};
 pub use writer::Writer;
 
 /// The `format` field of a recording's header.

@@ -9,6 +9,8 @@
 //!   line per domain; runs at the time limit are open markers at the limit.
 //! - [`operators_figure`]: Figure 3, operators per type and priority level.
 //! - [`goal_figure`] and [`goals_figure`]: Figure 4, the towers to build.
+//! - [`timeline_figure`]: signals over time in panels with thresholds, and bands (a
+//!   segmented recording, drawn by `demoplan timeline`).
 //! - [`report_html`]: one self-contained page with the paper's Tables 3 and 4
 //!   ([`search_time_table`], also as Markdown), the figures, the notes and every file.
 //!
@@ -33,6 +35,7 @@ mod model;
 pub mod paper;
 mod plots;
 mod render;
+mod timeline;
 
 pub use draw::{pt, text_width, Anchor, Color, Figure, Point, Shape, Stroke, Text};
 pub use html::{
@@ -49,3 +52,6 @@ pub use plots::{
     time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,
 };
 pub use render::RenderError;
+pub use timeline::{
+    timeline_figure, Band, BandRow, Panel, Series, Threshold, Timeline, Track, MAX_POINTS,
+};

@@ -33,6 +33,7 @@
 //! ```
 
 mod geometry;
+mod manifest;
 mod motion;
 mod params;
 mod render;
@@ -41,6 +42,7 @@ mod script;
 mod study;
 mod truth;
 
+pub use manifest::{manifest, Written, MANIFEST};
 pub use params::{Interval, ParamError, SimParams};
 pub use render::Frames;
 pub use rng::Rng;

@@ -9,7 +9,8 @@
 //!    cannot influence the goal are removed.
 //!
 //! A goal unreachable even in the relaxation is reported as [`Translation::Unsolvable`]
-//! at once. The crate knows nothing of search.
+//! at once; [`Translation::log`] gives Fast Downward's size lines. The crate knows
+//! nothing of search.
 //!
 //! ```
 //! let domain = pddl::parse_domain(
@@ -27,11 +28,13 @@
 //! // `at` is one variable with three values; the static `link` is compiled away.
 //! assert_eq!(t.task.variables.len(), 1);
 //! assert_eq!(t.task.operators.len(), 2);
+//! assert!(translate::Translation::Task(t).log().contains("Translator variables: 1\n"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 mod ground;
 mod invariants;
+mod log;
 mod model;
 mod sas;
 mod variable_order;

@@ -6,7 +6,7 @@
 //! [`pddl::Problem`] and returns a [`Report`]: valid or not, the failing step and the
 //! reason, and the plan's value. The crate reads the PDDL syntax tree directly and shares
 //! no code with the translator or the search, so that it is an independent check of the
-//! planner. It does no I/O and never prints.
+//! planner. It does no I/O and never prints; [`Report::val_text`] gives VAL's wording.
 //!
 //! ```
 //! let domain = pddl::parse_domain(
@@ -22,6 +22,7 @@
 //! let report = validate::validate(&domain, &problem, &plan)?;
 //! assert!(report.is_valid());
 //! assert_eq!(report.value, 1); // no metric: the value is the plan length
+//! assert!(report.val_text().ends_with("Plan valid\nFinal value: 1\n"));
 //!
 //! // Twice is once too often: the second step's precondition is false.
 //! let plan = validate::parse_plan("(a o)\n(a o)")?;
@@ -33,6 +34,7 @@
 
 mod execute;
 mod plan;
+mod val_text;
 mod world;
 
 pub use execute::{

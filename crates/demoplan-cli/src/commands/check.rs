@@ -1,13 +1,14 @@
 //! `demoplan check [DOMAIN] PROBLEM`: parse, check, summarise.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
+use crate::cli::CheckArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 
-pub fn run(files: &[PathBuf]) -> Result<ExitCode, Failure> {
-    let (domain_path, problem_path) = match files {
+pub fn run(args: CheckArgs) -> Result<ExitCode, Failure> {
+    let (domain_path, problem_path) = match args.files.as_slice() {
         [domain, problem] => (domain.clone(), Some(problem.clone())),
         [single] => {
             let source = input::read_text(single)?;

@@ -8,29 +8,16 @@
 //! `--class` naming the class (default: the last attribute).
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use grounding::HandFacts;
 use segment::{Activity, ActivityTree, Feature, LabelMap, UnknownLabels, C45};
 
+use crate::cli::ClassifyArgs;
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::output::{self, write_atomically};
-
-/// The command line of `classify`.
-#[derive(Debug)]
-pub struct ClassifyArgs {
-    pub files: Vec<PathBuf>,
-    pub tree: Option<PathBuf>,
-    pub learn: bool,
-    pub out: Option<PathBuf>,
-    pub class: Option<String>,
-    pub config: Option<PathBuf>,
-    /// The mapping file (the import crate's), whose `[labels]` table maps ARFF labels
-    /// to activities.
-    pub mapping: Option<PathBuf>,
-}
 
 pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
     if args.learn {
@@ -117,13 +104,8 @@ fn labelled(
     }
     let tree = ActivityTree::table_one();
     let mut grounded: Vec<(u64, Vec<HandFacts>)> = Vec::new();
-    let segmented = demo_input::segment_recording(
-        path,
-        config,
-        &tree,
-        |_, _| {},
-        |g| grounded.push((g.index, g.hands.to_vec())),
-    )?;
+    let mut observer = HandsGrounded(&mut grounded);
+    let segmented = demo_input::segment_recording(path, None, config, &tree, &mut observer)?;
     let truth = demo_input::read_truth(path, &segmented.header)?;
     let mut labels: Vec<String> = Vec::new();
     for (index, hands) in grounded {
@@ -139,6 +121,15 @@ fn labelled(
         hand_state: true,
         left_out: 0,
     })
+}
+
+/// Keeps each grounded frame's hand facts.
+struct HandsGrounded<'a>(&'a mut Vec<(u64, Vec<HandFacts>)>);
+
+impl learn::Observer for HandsGrounded<'_> {
+    fn grounded(&mut self, g: &grounding::GroundedFrame<'_>) {
+        self.0.push((g.index, g.hands.to_vec()));
+    }
 }
 
 /// Per label (index), how many frames the tree classified as each activity.

@@ -8,12 +8,11 @@ use std::io::BufReader;
 use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
-use grounding::{GroundedFrame, Grounder, GroundingConfig};
+use grounding::GroundingConfig;
+use learn::Segmented;
 use miette::NamedSource;
-use recording::{Frame, Header};
-use segment::{
-    ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame, Segment, Segmenter,
-};
+use recording::Header;
+use segment::{ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame};
 
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
@@ -296,13 +295,7 @@ pub fn segment_arff(
     let segmented = table
         .segments(table.frames(arff_reader(path)?), tree, min_duration)
         .map_err(|e| arff_failure(path, &e))?;
-    Ok(Segmented {
-        space: segmented.space,
-        frames: segmented.frames,
-        duration: segmented.duration,
-        header: table.header,
-        segments: segmented.segments,
-    })
+    Ok(Segmented::from_table(table.header, segmented))
 }
 
 /// Prints warnings about what an ARFF reader accepted.
@@ -365,8 +358,7 @@ pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
             } else if name.ends_with(".jsonl")
                 || is_arff(&file)
                 || (name.ends_with(".json")
-                    && crate::recording_input::source_kind(&file)?
-                        == crate::recording_input::SourceKind::Unity)
+                    && recording_input::source_kind(&file)? == recording_input::SourceKind::Unity)
             {
                 found += 1;
                 out.push(file);
@@ -411,58 +403,33 @@ pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
     Ok(out)
 }
 
-/// A recording grounded and segmented.
-#[derive(Debug)]
-pub struct Segmented {
-    pub header: Header,
-    pub space: grounding::FactSpace,
-    pub segments: Vec<Segment>,
-    pub frames: u64,
-    pub duration: f64,
-}
-
-/// Reads a recording, grounds it and segments it; `each` sees every frame read and the
-/// grounder after it (its signals), `grounded` every grounded frame.
-pub fn segment_recording(
+/// A recording or an ARFF hand-state table (by [`is_arff`]) segmented; a table's states
+/// hold the hand's own facts only (it has no geometry to ground).
+pub fn segment_file(
     path: &Path,
+    mapping: Option<&Path>,
     config: &GroundingConfig,
     tree: &ActivityTree,
-    mut each: impl FnMut(&Frame, &Grounder),
-    mut grounded: impl FnMut(&GroundedFrame<'_>),
 ) -> Result<Segmented, Failure> {
-    let mut reader = recording_input::open(path)?;
-    let header = reader.header().clone();
-    let mut grounder = Grounder::new(&header, config);
-    let hands = grounder.space().hands().to_vec();
-    let mut segmenter = Segmenter::new(&hands, tree.clone(), config.min_duration);
-    let mut frame = Frame::default();
-    let (mut frames, mut first, mut last) = (0u64, None, 0.0);
-    loop {
-        match reader.read_frame(&mut frame) {
-            Ok(true) => {}
-            Ok(false) => break,
-            Err(e) => return Err(recording_input::recording_failure(path, &e)),
-        }
-        frames += 1;
-        first.get_or_insert(frame.time);
-        last = frame.time;
-        grounder.push(&frame, &mut |g| {
-            segmenter.push_grounded(g);
-            grounded(g);
-        });
-        each(&frame, &grounder);
+    if is_arff(path) {
+        segment_arff(path, tree, config.min_duration)
+    } else {
+        segment_recording(path, mapping, config, tree, &mut ())
     }
-    grounder.finish(&mut |g| {
-        segmenter.push_grounded(g);
-        grounded(g);
-    });
-    Ok(Segmented {
-        space: grounder.space().clone(),
-        header,
-        segments: segmenter.finish(),
-        frames,
-        duration: last - first.unwrap_or(last),
-    })
+}
+
+/// Reads a recording (native, or a Unity log or bag imported with `mapping`), grounds
+/// it and segments it (`learn::segment_reader`); `observer` sees every frame.
+pub fn segment_recording(
+    path: &Path,
+    mapping: Option<&Path>,
+    config: &GroundingConfig,
+    tree: &ActivityTree,
+    observer: &mut dyn learn::Observer,
+) -> Result<Segmented, Failure> {
+    let mut reader = recording_input::open(path, mapping)?;
+    learn::segment_reader(&mut reader, config, tree, observer)
+        .map_err(|e| recording_input::recording_failure(path, &e))
 }
 
 /// The ground truth beside a simulated recording (`NAME.truth.jsonl` for `NAME.jsonl`).

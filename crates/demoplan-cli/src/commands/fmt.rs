@@ -1,15 +1,15 @@
 //! `demoplan fmt FILE...`: rewrite PDDL in canonical form.
 
-use std::path::PathBuf;
-
+use crate::cli::FmtArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 use crate::output::write_atomically;
 
-pub fn run(files: &[PathBuf], check: bool, stdout: bool) -> Result<ExitCode, Failure> {
+pub fn run(args: FmtArgs) -> Result<ExitCode, Failure> {
+    let (check, stdout) = (args.check, args.stdout);
     let mut code = ExitCode::SUCCESS;
-    for path in files {
+    for path in &args.files {
         let source = input::read_text(path)?;
         let parsed = pddl::parse_file(&source).map_err(|e| Failure::pddl(path, &source, &e))?;
         let header = leading_comments(&source);

@@ -5,18 +5,12 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use crate::cli::ImportArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::output;
 use crate::progress::BytesBar;
 use crate::recording_input::{self, SourceKind};
-
-pub struct ImportArgs {
-    pub sources: Vec<PathBuf>,
-    pub mapping: Option<PathBuf>,
-    pub out: PathBuf,
-    pub peak_heap: bool,
-}
 
 /// Sources this large show a progress bar on a terminal.
 const PROGRESS_FROM: u64 = 16 << 20;

@@ -2,14 +2,15 @@
 
 use std::fmt::Write as _;
 use std::io::Read;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 pub use learn::{cards_markdown, cards_text, domain_text, summary_table};
 use learn::{
-    levels, operator_subset, paper_goal_tower, per_type, problem, tower_goal, Added, DomainOptions,
-    Library, RecordingInfo, Scene, StableHasher,
+    levels, operator_subset, paper_goal_tower, per_type, tower_goal, Added, DomainOptions, Library,
+    RecordingInfo, Scene, StableHasher,
 };
 
+use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
@@ -58,23 +59,9 @@ fn file_hash(path: &Path) -> Result<String, Failure> {
     Ok(format!("{:016x}", hasher.finish()))
 }
 
-/// The command line of `learn`.
-#[derive(Debug)]
-pub struct LearnArgs {
-    pub files: Vec<PathBuf>,
-    pub library: Option<PathBuf>,
-    pub out: PathBuf,
-    pub lambda: Option<u32>,
-    /// `--activities`: how segments become activities, for a new library.
-    pub grouping: Option<learn::Grouping>,
-    pub config: Option<PathBuf>,
-    pub tree: Option<PathBuf>,
-    /// How long to wait for another writer's lock on the output (`None`: no limit).
-    pub lock_timeout: Option<std::time::Duration>,
-}
-
 /// The lambda of `--lambda` and the grouping of `--activities` must be the library's.
 fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), Failure> {
+    let grouping = args.activities.map(ActivitiesArg::grouping);
     if let Some(l) = args.lambda.filter(|&l| l != library.lambda) {
         return Err(Failure::plain(
             ExitCode::USAGE,
@@ -86,7 +73,7 @@ fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), 
             ),
         ));
     }
-    if let Some(g) = args.grouping.filter(|&g| g != library.grouping) {
+    if let Some(g) = grouping.filter(|&g| g != library.grouping) {
         return Err(Failure::plain(
             ExitCode::USAGE,
             format!(
@@ -106,7 +93,7 @@ fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), 
 struct Input<'a> {
     path: &'a Path,
     hash: String,
-    segmented: Option<demo_input::Segmented>,
+    segmented: Option<learn::Segmented>,
 }
 
 /// Learning in two phases, so that concurrent learners of one library lose no counts and
@@ -115,6 +102,8 @@ struct Input<'a> {
 /// library again, adding the recordings and writing it (durably, by a rename), so that
 /// the read and the write see no other writer in between (`docs/reliability.md`).
 pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
+    let lock_timeout = crate::commands::plan::parse_time_limit(&args.lock_timeout)
+        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))?;
     // A first look at the library: its lambda, and the recordings it already counts
     // (not segmented again). It is read again under the lock.
     let before = match &args.library {
@@ -129,13 +118,8 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let tree = demo_input::activity_tree(args.tree.as_deref())?;
     // ARFF hand-state tables are segmented as they are (no geometry to ground); their
     // states hold the hand's own facts only (docs/operators.md).
-    let segment = |path: &Path| {
-        if demo_input::is_arff(path) {
-            demo_input::segment_arff(path, &tree, config.min_duration)
-        } else {
-            demo_input::segment_recording(path, &config, &tree, |_, _| {}, |_| {})
-        }
-    };
+    let segment =
+        |path: &Path| demo_input::segment_file(path, args.mapping.as_deref(), &config, &tree);
     let files = demo_input::recordings(&args.files)?;
     let mut inputs: Vec<Input<'_>> = Vec::with_capacity(files.len());
     for path in &files {
@@ -152,7 +136,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
 
     drop(before);
 
-    let lock = WriteLock::acquire(&args.out, args.lock_timeout)?;
+    let lock = WriteLock::acquire(&args.out, lock_timeout)?;
     remove_stale_temporaries(&args.out);
     let mut library = match &args.library {
         Some(path) => {
@@ -162,7 +146,9 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         }
         None => Library::with_grouping(
             args.lambda.unwrap_or(learn::DEFAULT_LAMBDA),
-            args.grouping.unwrap_or_default(),
+            args.activities
+                .map(ActivitiesArg::grouping)
+                .unwrap_or_default(),
         ),
     };
     let mut log = String::new();
@@ -225,13 +211,6 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The command line of `operators`.
-#[derive(Debug)]
-pub struct OperatorsArgs {
-    pub library: PathBuf,
-    pub markdown: bool,
-}
-
 pub fn operators(args: OperatorsArgs) -> Result<ExitCode, Failure> {
     let library = read_library(&args.library)?;
     let text = if args.markdown {
@@ -243,17 +222,7 @@ pub fn operators(args: OperatorsArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The command line of `domain`.
-#[derive(Debug)]
-pub struct DomainArgs {
-    pub library: PathBuf,
-    pub prio: Option<usize>,
-    pub full: bool,
-    pub out: Option<PathBuf>,
-    pub keep_without_effects: bool,
-}
-
-pub fn run_domain(args: DomainArgs) -> Result<ExitCode, Failure> {
+pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
     let library = read_library(&args.library)?;
     let options = DomainOptions {
         keep_without_effects: args.keep_without_effects,
@@ -278,7 +247,9 @@ pub fn run_domain(args: DomainArgs) -> Result<ExitCode, Failure> {
             "full domain".to_string(),
         )
     } else {
-        let prio = args.prio.unwrap_or(1);
+        let prio = args
+            .prio
+            .map_or(1, |p| usize::try_from(p).unwrap_or(usize::MAX));
         (
             operator_subset(&library, prio, options),
             format!("priority {prio}"),
@@ -303,43 +274,25 @@ pub fn run_domain(args: DomainArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The command line of `problem`.
-#[derive(Debug)]
-pub struct ProblemArgs {
-    pub tower: Option<String>,
-    pub paper_goal: Option<usize>,
-    pub cubes: Option<usize>,
-    pub hands: Option<usize>,
-    pub from: Option<PathBuf>,
-    pub frame: Option<u64>,
-    pub out: PathBuf,
-    pub config: Option<PathBuf>,
-}
-
 /// The scene of a problem: grounded from a recording's frame, or the default.
 fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
     let Some(path) = &args.from else {
+        // Both are bounded by their value parsers (64 cubes, 2 hands).
         return Ok(Scene::with_hands(
-            args.cubes.unwrap_or(learn::DEFAULT_CUBES),
-            args.hands.unwrap_or(learn::DEFAULT_HANDS.len()),
+            args.cubes.map_or(learn::DEFAULT_CUBES, |c| c as usize),
+            args.hands
+                .map_or(learn::DEFAULT_HANDS.len(), |h| h as usize),
         ));
     };
     let config = demo_input::config(args.config.as_deref())?;
     let tree = segment::ActivityTree::table_one();
     let wanted = args.frame.unwrap_or(0);
-    let mut state = None;
-    let segmented = demo_input::segment_recording(
-        path,
-        &config,
-        &tree,
-        |_, _| {},
-        |g| {
-            if g.index == wanted {
-                state = Some(g.state.clone());
-            }
-        },
-    )?;
-    let Some(state) = state else {
+    let mut at = StateAt {
+        wanted,
+        state: None,
+    };
+    let segmented = demo_input::segment_recording(path, None, &config, &tree, &mut at)?;
+    let Some(state) = at.state else {
         return Err(Failure::plain(
             ExitCode::USAGE,
             format!(
@@ -356,7 +309,21 @@ fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
     ))
 }
 
-pub fn run_problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
+/// Keeps the grounded state of one frame.
+struct StateAt {
+    wanted: u64,
+    state: Option<grounding::State>,
+}
+
+impl learn::Observer for StateAt {
+    fn grounded(&mut self, g: &grounding::GroundedFrame<'_>) {
+        if g.index == self.wanted {
+            self.state = Some(g.state.clone());
+        }
+    }
+}
+
+pub fn problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
     let scene = scene(&args)?;
     let (tower, name): (Vec<String>, String) = match (&args.tower, args.paper_goal) {
         (Some(list), None) => {
@@ -408,7 +375,7 @@ pub fn run_problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
         "; demoplan problem: a tower of {} cubes, bottom first: {}.\n{}",
         tower.len(),
         tower.join(", "),
-        problem(&name, "demoplan", &scene, &goal)
+        learn::problem(&name, "demoplan", &scene, &goal)
     );
     write_atomically(&args.out, &text)?;
     println!("wrote {} ({name})", args.out.display());

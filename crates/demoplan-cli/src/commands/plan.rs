@@ -1,26 +1,14 @@
 //! `demoplan plan`: translate (or read output.sas), search, write the plan; Fast
 //! Downward's log lines, plan file and exit codes.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
+use crate::cli::PlanArgs;
 use crate::commands::translate::{domain_and_problem, translate_files, Translated};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::{input, memory, output};
-
-/// The `plan` command's arguments, as given.
-#[derive(Debug)]
-pub struct PlanArgs {
-    pub files: Vec<PathBuf>,
-    pub search: Option<String>,
-    pub alias: Option<String>,
-    pub plan_file: PathBuf,
-    pub time_limit: Option<String>,
-    pub memory_limit: Option<String>,
-    pub stats_json: Option<PathBuf>,
-    pub validate: bool,
-}
 
 /// `30s`, `5m`, `1h`, `90` (seconds), `infinity`.
 pub fn parse_time_limit(text: &str) -> Result<Option<Duration>, String> {
@@ -73,14 +61,14 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let start = Instant::now();
     let usage = |m: String| Failure::plain(ExitCode::USAGE, m);
     let time_limit = args
-        .time_limit
+        .overall_time_limit
         .as_deref()
         .map(parse_time_limit)
         .transpose()
         .map_err(usage)?
         .flatten();
     let memory_limit = args
-        .memory_limit
+        .overall_memory_limit
         .as_deref()
         .map(parse_memory_limit)
         .transpose()
@@ -227,8 +215,11 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     }
     write_stats(&args, &report)?;
     if let (Some(_), true, Some((domain, problem))) = (plan, args.validate, &pddl_files) {
-        let invalid =
-            crate::commands::validate::run(domain, problem, std::slice::from_ref(&args.plan_file))?;
+        let invalid = crate::commands::validate::validate_plans(
+            domain,
+            problem,
+            std::slice::from_ref(&args.plan_file),
+        )?;
         if invalid != ExitCode::SUCCESS {
             return Err(Failure::plain(
                 ExitCode::CRITICAL_SEARCH_ERROR,

@@ -1,29 +1,15 @@
 //! `demoplan simulate -o DIR`: simulated demonstrations of people stacking cubes, each a
 //! recording in the native format with its ground truth beside it, and a manifest.
 
-use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use serde_json::json;
+use simulate::MANIFEST;
 
+use crate::cli::SimulateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 use crate::output::{write_atomically, write_atomically_with};
-
-/// The command line of `simulate`.
-#[derive(Debug)]
-pub struct SimulateArgs {
-    pub participants: u32,
-    pub per_participant: u32,
-    pub seed: u64,
-    pub out: PathBuf,
-    pub params: Option<PathBuf>,
-    pub cubes: Option<u32>,
-}
-
-/// Name of the manifest written beside the recordings.
-pub const MANIFEST: &str = "simulation.json";
 
 pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
     let mut params = match &args.params {
@@ -58,68 +44,17 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
         )
     })?;
     let mut listing = String::new();
-    let mut entries = Vec::new();
-    let (mut total_frames, mut total_seconds) = (0u64, 0.0f64);
+    let mut written = Vec::new();
     for demo in &study.demonstrations {
-        let name = format!("{}.jsonl", demo.id);
-        let truth_name = format!("{}.truth.jsonl", demo.id);
-        let (frames, seconds) =
-            write_demonstration(demo, &args.out.join(&name), &args.out.join(&truth_name))?;
-        total_frames += frames;
-        total_seconds += seconds;
-        let hand = demo.hand.map_or("both", |h| h.name());
-        let placements: Vec<String> = demo.placements.iter().map(|p| demo.describe(p)).collect();
-        let _ = writeln!(
-            listing,
-            "{:<8} {:<5} hand  {} cube{}  {:>5} frames  {:>6.2} s  {}",
-            demo.id,
-            hand,
-            demo.placements.len(),
-            if demo.placements.len() == 1 { " " } else { "s" },
-            frames,
-            seconds,
-            placements.join(", ")
-        );
-        entries.push(json!({
-            "id": demo.id,
-            "recording": name,
-            "truth": truth_name,
-            "participant": demo.participant.code,
-            "hand": hand,
-            "task": demo.header().task,
-            "placements": placements,
-            "frames": frames,
-            "duration": (seconds * 1000.0).round() / 1000.0,
-        }));
+        let path = args.out.join(demo.recording_name());
+        let w = write_demonstration(demo, &path, &args.out.join(demo.truth_name()))?;
+        listing.push_str(&demo.listing_line(w));
+        written.push(w);
     }
-    let participants: Vec<serde_json::Value> = study
-        .participants
-        .iter()
-        .map(|p| {
-            json!({
-                "code": p.code,
-                "dominant_hand": p.dominant.name(),
-                "mean_speed": (p.mean_speed * 1000.0).round() / 1000.0,
-                "rest_after_grasp": (p.rest_after_grasp * 1000.0).round() / 1000.0,
-                "hover": (p.hover * 1000.0).round() / 1000.0,
-                "return_between": (p.return_between * 1000.0).round() / 1000.0,
-                "abort": (p.abort * 1000.0).round() / 1000.0,
-                "regrasp": (p.regrasp * 1000.0).round() / 1000.0,
-                "adjust": (p.adjust * 1000.0).round() / 1000.0,
-                "fidget_rate": (p.fidget_rate * 1000.0).round() / 1000.0,
-            })
-        })
-        .collect();
-    let manifest = json!({
-        "format": "demoplan-simulation",
-        "version": 1,
-        "seed": args.seed,
-        "participants": participants,
-        "params": params.to_json(),
-        "recordings": entries,
-    });
-    let text = serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n";
-    write_atomically(&args.out.join(MANIFEST), &text)?;
+    let manifest = simulate::manifest(&study, args.seed, &params, &written);
+    write_atomically(&args.out.join(MANIFEST), &manifest)?;
+    let total_frames: u64 = written.iter().map(|w| w.frames).sum();
+    let total_seconds: f64 = written.iter().map(|w| w.seconds).sum();
     print!("{listing}");
     println!(
         "wrote {} recordings ({total_frames} frames, {total_seconds:.1} s) with their ground truth \
@@ -130,13 +65,12 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// Writes the recording and its ground truth; returns the frames written and the seconds
-/// from the first to the last.
+/// Writes the recording and its ground truth; says what was written.
 fn write_demonstration(
     demo: &simulate::Demonstration,
     path: &Path,
     truth_path: &Path,
-) -> Result<(u64, f64), Failure> {
+) -> Result<simulate::Written, Failure> {
     let mut truth = simulate::TruthWriter::new(Vec::new(), &demo.truth_header(), demo.header())
         .map_err(|e| write_failure(truth_path, e))?;
     let (mut frames, mut first, mut last) = (0u64, 0.0, 0.0);
@@ -160,7 +94,10 @@ fn write_demonstration(
     })?;
     let bytes = truth.finish().map_err(|e| write_failure(truth_path, e))?;
     write_atomically_with(truth_path, |out| out.write_all(&bytes))?;
-    Ok((frames, last - first))
+    Ok(simulate::Written {
+        frames,
+        seconds: last - first,
+    })
 }
 
 fn write_failure(path: &Path, e: std::io::Error) -> Failure {

@@ -1,30 +1,17 @@
 //! `demoplan solve LIBRARY PROBLEM`: the paper's Algorithm 1 on the command line.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Duration;
 
 use learn::DomainOptions;
 use slim::{Backend, FastDownward, Outcome};
 
+use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 use crate::output::write_atomically;
-
-/// The command line of `solve`.
-#[derive(Debug)]
-pub struct SolveArgs {
-    pub library: PathBuf,
-    pub problem: PathBuf,
-    pub search: String,
-    pub time_limit: Option<Duration>,
-    pub planner: String,
-    pub fd: Option<PathBuf>,
-    pub compare_full: bool,
-    pub plan_file: PathBuf,
-    pub keep_without_effects: bool,
-}
 
 fn read_problem(path: &Path) -> Result<pddl::Problem, Failure> {
     let text = input::read_text(path)?;
@@ -36,6 +23,11 @@ fn seconds(d: Duration) -> String {
 }
 
 pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
+    let time_limit = match &args.time_limit {
+        Some(text) => crate::commands::plan::parse_time_limit(text)
+            .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))?,
+        None => None,
+    };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
     let backend = match args.planner.as_str() {
@@ -64,28 +56,21 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         "{:>5} {:>9}  {:<19} {:>9} {:>11} {:>6}",
         "prio", "operators", "outcome", "time (s)", "expansions", "cost"
     );
-    let solved = slim::solve(
-        &library,
-        options,
-        &problem,
-        &backend,
-        args.time_limit,
-        |level| {
-            let run = &level.run;
-            println!(
-                "{:>5} {:>9}  {:<19} {:>9} {:>11} {:>6}",
-                level.prio,
-                level.operators,
-                run.outcome.word(),
-                seconds(run.total_time),
-                run.expansions.map_or("-".to_string(), |e| e.to_string()),
-                run.cost.map_or("-".to_string(), |c| c.to_string())
-            );
-            if let Outcome::Error(e) = &run.outcome {
-                eprintln!("error at priority {}: {e}", level.prio);
-            }
-        },
-    );
+    let solved = slim::solve(&library, options, &problem, &backend, time_limit, |level| {
+        let run = &level.run;
+        println!(
+            "{:>5} {:>9}  {:<19} {:>9} {:>11} {:>6}",
+            level.prio,
+            level.operators,
+            run.outcome.word(),
+            seconds(run.total_time),
+            run.expansions.map_or("-".to_string(), |e| e.to_string()),
+            run.cost.map_or("-".to_string(), |c| c.to_string())
+        );
+        if let Outcome::Error(e) = &run.outcome {
+            eprintln!("error at priority {}: {e}", level.prio);
+        }
+    });
     println!(
         "Cumulative time over {} level(s), failed ones included: {} s",
         solved.levels.len(),
@@ -112,7 +97,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         let all = learn::levels(&library, options);
         if let Some(full) = all.last() {
             let domain = learn::domain("demoplan", &full.operators);
-            let run = backend.plan(&domain, &problem, args.time_limit);
+            let run = backend.plan(&domain, &problem, time_limit);
             match (&run.outcome, run.cost) {
                 (Outcome::Solved, Some(optimum)) => println!(
                     "Full domain ({} operators): optimal cost {optimum} in {} s; the slim plan \

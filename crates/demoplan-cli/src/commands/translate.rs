@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::cli::TranslateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::{input, output};
@@ -36,36 +37,10 @@ pub fn translate_files(domain: &Path, problem: &Path) -> Result<Translated, Fail
     let result = translate::translate(&parsed.domain, &parsed.problem).map_err(|e| {
         Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
     })?;
+    print!("{}", result.log());
     let translated = match result {
-        translate::Translation::Unsolvable { reason, stats } => {
-            println!("{} relevant atoms", stats.reachable_atoms);
-            println!("{} ground actions", stats.ground_actions);
-            println!("Goal violated by relaxed reachability: {reason}");
-            Translated::Unsolvable
-        }
-        translate::Translation::Task(t) => {
-            let s = &t.stats;
-            println!("{} relevant atoms", s.reachable_atoms);
-            println!("{} fluent atoms", s.fluent_atoms);
-            println!("{} ground actions", s.ground_actions);
-            println!("Found {} mutex groups", s.mutex_groups);
-            println!(
-                "{} variables before goal relevance",
-                s.variables_before_relevance
-            );
-            let task = t.task;
-            let sizes = task.sizes();
-            println!("Translator variables: {}", sizes.variables);
-            println!("Translator facts: {}", sizes.facts);
-            println!("Translator goal facts: {}", sizes.goal_facts);
-            println!("Translator mutex groups: {}", sizes.mutex_groups);
-            println!(
-                "Translator total mutex groups size: {}",
-                task.mutexes.iter().map(Vec::len).sum::<usize>()
-            );
-            println!("Translator operators: {}", sizes.operators);
-            Translated::Task(task)
-        }
+        translate::Translation::Unsolvable { .. } => Translated::Unsolvable,
+        translate::Translation::Task(t) => Translated::Task(t.task),
     };
     println!(
         "Translation done! [{:.3}s wall-clock]",
@@ -90,8 +65,9 @@ pub fn trivially_unsolvable_task() -> task::Task {
     }
 }
 
-pub fn run(files: &[PathBuf], sas_file: &Path) -> Result<ExitCode, Failure> {
-    let (domain, problem) = domain_and_problem(files)?;
+pub fn run(args: TranslateArgs) -> Result<ExitCode, Failure> {
+    let (domain, problem) = domain_and_problem(&args.files)?;
+    let sas_file = &args.sas_file;
     let (task, code) = match translate_files(&domain, &problem)? {
         Translated::Task(task) => (task, ExitCode::SUCCESS),
         Translated::Unsolvable => (trivially_unsolvable_task(), ExitCode::UNSOLVABLE),

@@ -3,13 +3,21 @@
 
 use std::path::{Path, PathBuf};
 
-use validate::{GroundLiteral, Reason, Report, Verdict};
-
+use crate::cli::ValidateArgs;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
 
-pub fn run(domain: &Path, problem: &Path, plans: &[PathBuf]) -> Result<ExitCode, Failure> {
+pub fn run(args: ValidateArgs) -> Result<ExitCode, Failure> {
+    validate_plans(&args.domain, &args.problem, &args.plans)
+}
+
+/// Validates each plan file, printing VAL's report; the exit code counts invalid plans.
+pub fn validate_plans(
+    domain: &Path,
+    problem: &Path,
+    plans: &[PathBuf],
+) -> Result<ExitCode, Failure> {
     let task = input::read_task(domain, problem)?;
     // Every plan file is read before any is judged: a missing one is a command line
     // mistake (36), not an invalid plan.
@@ -30,7 +38,7 @@ pub fn run(domain: &Path, problem: &Path, plans: &[PathBuf]) -> Result<ExitCode,
             }
             Ok(plan) => match validate::validate(&task.domain, &task.problem, &plan) {
                 Ok(report) => {
-                    render(&mut out, &report);
+                    out.push_str(&report.val_text());
                     report.is_valid()
                 }
                 Err(e) => {
@@ -49,56 +57,4 @@ pub fn run(domain: &Path, problem: &Path, plans: &[PathBuf]) -> Result<ExitCode,
     }
     // VAL exits with the number of invalid plans; beyond 255 it would wrap to success.
     Ok(ExitCode(invalid.min(255)))
-}
-
-/// VAL's report of one plan, with its repair advice.
-fn render(out: &mut String, report: &Report) {
-    match &report.verdict {
-        Verdict::Valid => {
-            out.push_str("Plan executed successfully - checking goal\n");
-            out.push_str("Plan valid\n");
-            out.push_str(&format!("Final value: {}\n", report.value));
-        }
-        Verdict::StepFailed(failure) => {
-            out.push_str("Plan failed to execute\n");
-            match &failure.reason {
-                Reason::UnsatisfiedPrecondition { unsatisfied } => {
-                    out.push_str("Plan Repair Advice:\n");
-                    out.push_str(&format!(
-                        "{} has an unsatisfied precondition at time {}\n",
-                        failure.action, failure.step
-                    ));
-                    advice(out, unsatisfied);
-                }
-                other => out.push_str(&format!(
-                    "{} at time {} (line {}): {other}\n",
-                    failure.action, failure.step, failure.line
-                )),
-            }
-            out.push_str("Plan invalid\n");
-        }
-        Verdict::GoalNotSatisfied { unsatisfied } => {
-            out.push_str("Plan executed successfully - checking goal\n");
-            out.push_str("Goal not satisfied\n");
-            out.push_str("Plan Repair Advice:\n");
-            advice(out, unsatisfied);
-            out.push_str("Plan invalid\n");
-        }
-    }
-}
-
-/// `(Set (p a) to true)` for one literal; `(Follow each of: ...)` around several.
-fn advice(out: &mut String, literals: &[GroundLiteral]) {
-    let set = |l: &GroundLiteral| format!("(Set {} to {})", l.atom, l.positive);
-    match literals {
-        [one] => out.push_str(&format!("{}\n", set(one))),
-        _ => {
-            out.push_str("(Follow each of:\n");
-            for (i, l) in literals.iter().enumerate() {
-                let and = if i == 0 { "" } else { "and " };
-                out.push_str(&format!("    {and}{}\n", set(l)));
-            }
-            out.push_str(")\n");
-        }
-    }
 }

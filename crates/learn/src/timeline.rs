@@ -1,0 +1,224 @@
+//! A segmented recording as a timeline (`demoplan timeline`): per hand its speed, its
+//! distance to every object and its grip, with the grounding thresholds, and its
+//! segments (and the simulator's truth) as bands coloured by activity, so that a person
+//! can see why a segment was cut where it was. The drawing is `report`'s.
+
+use grounding::{Grounder, GroundingConfig, HandSignals};
+use recording::Frame;
+use report::{Band, BandRow, Color, Panel, Series, Threshold, Timeline, Track};
+use segment::Activity;
+
+use crate::pipeline::{Observer, Segmented};
+
+/// The signals of every frame, per hand, as the grounder saw them: an [`Observer`] of
+/// the pipeline.
+#[derive(Debug, Default, Clone)]
+pub struct Signals {
+    times: Vec<f64>,
+    /// Per frame, the grounder's signals of each hand.
+    hands: Vec<Vec<HandSignals>>,
+}
+
+impl Observer for Signals {
+    fn frame(&mut self, frame: &Frame, grounder: &Grounder) {
+        self.times.push(frame.time);
+        self.hands.push(grounder.signals().to_vec());
+    }
+}
+
+/// The colour of an activity's bands.
+pub fn activity_color(a: Activity) -> Color {
+    match a {
+        Activity::Stack => Color(214, 39, 40),
+        Activity::Idle => Color(217, 217, 217),
+        Activity::Reach => Color(31, 119, 180),
+        Activity::Put => Color(44, 160, 44),
+        Activity::Take => Color(255, 127, 14),
+    }
+}
+
+const OBJECT_COLORS: [Color; 8] = [
+    Color(31, 119, 180),
+    Color(255, 127, 14),
+    Color(44, 160, 44),
+    Color(214, 39, 40),
+    Color(148, 103, 189),
+    Color(140, 86, 75),
+    Color(227, 119, 194),
+    Color(23, 190, 207),
+];
+const INK: Color = Color(34, 34, 34);
+/// A truth label that names no activity.
+const UNKNOWN: Color = Color::BLACK;
+/// The speed panel's top is the fastest frame's speed, within these bounds (m/s).
+const SPEED_SCALE: (f32, f32) = (0.3, 3.0);
+
+/// The timeline of a segmented recording whose frames `signals` saw; `truth` (per frame,
+/// per hand, an activity's name) adds a band row of the simulator's truth per hand.
+/// `source` names where the recording came from, in the title.
+pub fn timeline(
+    s: &Segmented,
+    signals: &Signals,
+    truth: Option<&[Vec<String>]>,
+    config: &GroundingConfig,
+    source: &str,
+) -> Timeline {
+    let start = signals.times.first().copied().unwrap_or(0.0);
+    let end = signals.times.last().copied().unwrap_or(1.0);
+    let max_speed = signals
+        .hands
+        .iter()
+        .flatten()
+        .map(|h| h.speed)
+        .fold(SPEED_SCALE.0, f32::max)
+        .min(SPEED_SCALE.1);
+    let series = |hand: usize,
+                  name: &str,
+                  color: Color,
+                  value: &dyn Fn(&HandSignals) -> Option<f32>| Series {
+        name: name.to_string(),
+        color,
+        points: signals
+            .times
+            .iter()
+            .zip(&signals.hands)
+            .map(|(&t, hands)| {
+                let v = hands.get(hand).and_then(value).map_or(f64::NAN, f64::from);
+                (t, v)
+            })
+            .collect(),
+    };
+    let threshold = |value: f64, name: &str| Threshold {
+        value,
+        name: name.to_string(),
+    };
+    let tracks = s
+        .space
+        .hands()
+        .iter()
+        .enumerate()
+        .map(|(hi, &hand)| {
+            let distances = s
+                .space
+                .objects()
+                .iter()
+                .enumerate()
+                .map(|(k, &obj)| {
+                    let color = OBJECT_COLORS[k % OBJECT_COLORS.len()];
+                    series(hi, &s.header.entity(obj).name, color, &|h| {
+                        h.distances.get(k).copied()
+                    })
+                })
+                .collect();
+            let panels = vec![
+                Panel {
+                    label: "speed (m/s)".into(),
+                    max: f64::from(max_speed),
+                    thresholds: vec![threshold(config.hand_move.speed, "handMove")],
+                    series: vec![series(hi, "speed", INK, &|h| Some(h.speed))],
+                },
+                Panel {
+                    label: "distance (m)".into(),
+                    max: 0.4,
+                    thresholds: vec![
+                        threshold(config.acted_on.distance, "actedOn"),
+                        threshold(config.graspable.distance, "graspable"),
+                    ],
+                    series: distances,
+                },
+                Panel {
+                    label: "grip".into(),
+                    max: 1.0,
+                    thresholds: vec![
+                        threshold(config.hand_open.close_above, "closed"),
+                        threshold(config.hand_open.open_below, "open"),
+                    ],
+                    series: vec![series(hi, "grip", INK, &|h| h.grip)],
+                },
+            ];
+            let mut bands = vec![BandRow {
+                label: "segments".into(),
+                bands: s
+                    .segments
+                    .iter()
+                    .filter(|g| g.hand == hand)
+                    .map(|g| Band {
+                        start: g.start,
+                        end: g.end,
+                        color: activity_color(g.activity),
+                    })
+                    .collect(),
+                boundaries: true,
+            }];
+            if let Some(truth) = truth {
+                bands.push(BandRow {
+                    label: "ground truth".into(),
+                    bands: truth_bands(&signals.times, truth, hi),
+                    boundaries: false,
+                });
+            }
+            Track {
+                name: s.header.entity(hand).name.clone(),
+                panels,
+                bands,
+            }
+        })
+        .collect();
+    Timeline {
+        title: format!(
+            "{} ({source}, {} frames, {:.2} s)",
+            s.header.id, s.frames, s.duration
+        ),
+        start,
+        end,
+        tracks,
+        legend: Activity::ALL
+            .iter()
+            .map(|&a| (a.name().to_string(), activity_color(a)))
+            .collect(),
+    }
+}
+
+/// The runs of one truth label of hand `hand` as bands (frames without a label for the
+/// hand are Idle).
+fn truth_bands(times: &[f64], truth: &[Vec<String>], hand: usize) -> Vec<Band> {
+    let mut bands: Vec<(f64, f64, &str)> = Vec::new();
+    for (&t, names) in times.iter().zip(truth) {
+        let name = names.get(hand).map_or("Idle", String::as_str);
+        match bands.last_mut() {
+            Some(last) if last.2 == name => last.1 = t,
+            Some(last) => {
+                last.1 = t;
+                bands.push((t, t, name));
+            }
+            None => bands.push((t, t, name)),
+        }
+    }
+    bands
+        .into_iter()
+        .map(|(start, end, name)| Band {
+            start,
+            end,
+            color: Activity::from_name(name).map_or(UNKNOWN, activity_color),
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn truth_runs_become_bands_that_meet() {
+        let times = [0.0, 0.1, 0.2, 0.3];
+        let truth: Vec<Vec<String>> = ["Reach", "Reach", "Take", "Pour"]
+            .iter()
+            .map(|n| vec![n.to_string()])
+            .collect();
+        let bands = truth_bands(&times, &truth, 0);
+        let spans: Vec<(f64, f64)> = bands.iter().map(|b| (b.start, b.end)).collect();
+        assert_eq!(spans, [(0.0, 0.2), (0.2, 0.3), (0.3, 0.3)]);
+        assert_eq!(bands[0].color, activity_color(Activity::Reach));
+        assert_eq!(bands[2].color, UNKNOWN);
+    }
+}

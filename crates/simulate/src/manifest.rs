@@ -1,0 +1,108 @@
+//! What `demoplan simulate` writes beside the recordings: the manifest
+//! (`simulation.json`: the seed, the participants drawn, the parameters and per
+//! demonstration its files, hand, task, placements, frames and duration) and a listing
+//! line per demonstration.
+
+use serde_json::json;
+
+use crate::params::SimParams;
+use crate::study::{Demonstration, Study};
+
+/// Name of the manifest written beside the recordings.
+pub const MANIFEST: &str = "simulation.json";
+
+/// What was written of one demonstration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Written {
+    pub frames: u64,
+    /// Seconds from the first frame to the last.
+    pub seconds: f64,
+}
+
+/// Rounded to milliseconds (or thousandths), as the manifest shows values.
+fn milli(x: f64) -> f64 {
+    (x * 1000.0).round() / 1000.0
+}
+
+impl Demonstration {
+    /// The recording's file name, `ID.jsonl`.
+    pub fn recording_name(&self) -> String {
+        format!("{}.jsonl", self.id)
+    }
+
+    /// The ground truth's file name, `ID.truth.jsonl`.
+    pub fn truth_name(&self) -> String {
+        format!("{}.truth.jsonl", self.id)
+    }
+
+    fn hand_name(&self) -> &'static str {
+        self.hand.map_or("both", |h| h.name())
+    }
+
+    /// One line for people: id, hand, cubes placed, frames, seconds, the placements.
+    pub fn listing_line(&self, written: Written) -> String {
+        let placements: Vec<String> = self.placements.iter().map(|p| self.describe(p)).collect();
+        format!(
+            "{:<8} {:<5} hand  {} cube{}  {:>5} frames  {:>6.2} s  {}\n",
+            self.id,
+            self.hand_name(),
+            self.placements.len(),
+            if self.placements.len() == 1 { " " } else { "s" },
+            written.frames,
+            written.seconds,
+            placements.join(", ")
+        )
+    }
+}
+
+/// The manifest of a study simulated with `seed` and `params`, whose demonstrations were
+/// written as `written` says (in the study's order), as pretty JSON ending in a newline.
+pub fn manifest(study: &Study, seed: u64, params: &SimParams, written: &[Written]) -> String {
+    let recordings: Vec<serde_json::Value> = study
+        .demonstrations
+        .iter()
+        .zip(written)
+        .map(|(demo, w)| {
+            let placements: Vec<String> =
+                demo.placements.iter().map(|p| demo.describe(p)).collect();
+            json!({
+                "id": demo.id,
+                "recording": demo.recording_name(),
+                "truth": demo.truth_name(),
+                "participant": demo.participant.code,
+                "hand": demo.hand_name(),
+                "task": demo.header().task,
+                "placements": placements,
+                "frames": w.frames,
+                "duration": milli(w.seconds),
+            })
+        })
+        .collect();
+    let participants: Vec<serde_json::Value> = study
+        .participants
+        .iter()
+        .map(|p| {
+            json!({
+                "code": p.code,
+                "dominant_hand": p.dominant.name(),
+                "mean_speed": milli(p.mean_speed),
+                "rest_after_grasp": milli(p.rest_after_grasp),
+                "hover": milli(p.hover),
+                "return_between": milli(p.return_between),
+                "abort": milli(p.abort),
+                "regrasp": milli(p.regrasp),
+                "adjust": milli(p.adjust),
+                "fidget_rate": milli(p.fidget_rate),
+            })
+        })
+        .collect();
+    let manifest = json!({
+        "format": "demoplan-simulation",
+        "version": 1,
+        "seed": seed,
+        "participants": participants,
+        "params": params.to_json(),
+        "recordings": recordings,
+    });
+    serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n"
+}

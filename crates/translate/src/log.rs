@@ -1,0 +1,40 @@
+//! What Fast Downward's translator prints about a translation, in its words
+//! ("Translator variables: N", ...), so that scripts that read its log read ours.
+
+use crate::Translation;
+
+impl Translation {
+    /// The translator's size lines for this result, each ending in a newline.
+    pub fn log(&self) -> String {
+        let mut lines: Vec<String> = Vec::new();
+        match self {
+            Translation::Unsolvable { reason, stats } => {
+                lines.push(format!("{} relevant atoms", stats.reachable_atoms));
+                lines.push(format!("{} ground actions", stats.ground_actions));
+                lines.push(format!("Goal violated by relaxed reachability: {reason}"));
+            }
+            Translation::Task(t) => {
+                let s = &t.stats;
+                let sizes = t.task.sizes();
+                let mutex_size: usize = t.task.mutexes.iter().map(Vec::len).sum();
+                lines.extend([
+                    format!("{} relevant atoms", s.reachable_atoms),
+                    format!("{} fluent atoms", s.fluent_atoms),
+                    format!("{} ground actions", s.ground_actions),
+                    format!("Found {} mutex groups", s.mutex_groups),
+                    format!(
+                        "{} variables before goal relevance",
+                        s.variables_before_relevance
+                    ),
+                    format!("Translator variables: {}", sizes.variables),
+                    format!("Translator facts: {}", sizes.facts),
+                    format!("Translator goal facts: {}", sizes.goal_facts),
+                    format!("Translator mutex groups: {}", sizes.mutex_groups),
+                    format!("Translator total mutex groups size: {mutex_size}"),
+                    format!("Translator operators: {}", sizes.operators),
+                ]);
+            }
+        }
+        lines.iter().map(|l| format!("{l}\n")).collect()
+    }
+}

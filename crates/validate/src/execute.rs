@@ -5,7 +5,7 @@ use std::fmt;
 
 use pddl::{Atom, CostExpr, Domain, Effect, FunctionTerm, InitEntry, Literal, Problem, Term, Type};
 
-use crate::plan::{Plan, Step};
+use pddl::{Plan, Step};
 use crate::world::World;
 
 /// A ground atom, `(on a b)`; also a ground function term, `(road-length a b)`.
@@ -285,7 +285,7 @@ pub fn validate(domain: &Domain, problem: &Problem, plan: &Plan) -> Result<Repor
             verdict: Verdict::StepFailed(StepFailure {
                 step: number,
                 action: step.to_string(),
-                line: step.line,
+                line: plan.line(index),
                 reason,
             }),
             value,

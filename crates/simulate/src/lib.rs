@@ -32,7 +32,6 @@
 //! # Ok::<(), simulate::ParamError>(())
 //! ```
 
-mod geometry;
 mod motion;
 mod params;
 mod render;

@@ -6,7 +6,7 @@
 //! things really are then (a person corrects by sight). Durations are fixed here, from
 //! planned distances.
 
-use crate::geometry::{wrap_angle, V3};
+use geometry::{wrap_angle, V3};
 use crate::motion::{min_jerk, Drift};
 use crate::params::{Interval, SimParams};
 use crate::rng::Rng;

@@ -154,10 +154,7 @@ mod tests {
 
     /// A fresh folder for one test.
     fn folder(test: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!(
-            "atomic-write-{test}-{}",
-            std::process::id()
-        ));
+        let dir = std::env::temp_dir().join(format!("atomic-write-{test}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         dir
@@ -199,7 +196,10 @@ mod tests {
             Err(std::io::Error::other("disk full"))
         })
         .unwrap_err();
-        assert_eq!(e.to_string(), format!("cannot write {}: disk full", path.display()));
+        assert_eq!(
+            e.to_string(),
+            format!("cannot write {}: disk full", path.display())
+        );
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
         assert_eq!(entries(&dir), ["out.txt"]);
         // A folder that does not exist: the error names the target.

@@ -8,15 +8,15 @@ use pddl::{Domain, Problem};
 use recording::{Frame, Recording};
 use serde::Serialize;
 
-use geometry::V3;
 use crate::motion::Script;
 use crate::plan::{candidates, Intent};
 use crate::symbolic::{
-    atom_text, fact_of, fact_text, ground_action, initial_atoms, layout, scene_objects,
-    Atom, GroundAction,
+    atom_text, fact_of, fact_text, ground_action, initial_atoms, layout, scene_objects, Atom,
+    GroundAction,
 };
 use crate::world::{World, FRAME_RATE};
 use crate::ExecuteError;
+use geometry::V3;
 
 /// How long the scene stands still before the first step and after the last (s).
 const SETTLE: f64 = 0.4;

@@ -6,9 +6,9 @@
 use grounding::{Fact, Predicate};
 use recording::{Activity, EntityId};
 
-use geometry::V3;
 use crate::motion::{Script, CREEP, FAST};
 use crate::world::{World, CUBE_SIZE, GRASP_HEIGHT, TABLE_HEIGHT};
+use geometry::V3;
 
 const UP: V3 = V3::new(0.0, 0.0, 1.0);
 const TOWARD_PERSON: V3 = V3::new(-1.0, 0.0, 0.0);

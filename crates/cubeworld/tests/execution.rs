@@ -161,12 +161,7 @@ fn a_reach_that_grasps_is_valid_in_pddl_but_fails_in_the_cube_world() {
         .iter()
         .position(|s| s.action == "reach9")
         .unwrap_or_else(|| panic!("the plan does not use the corrupted reach: {steps:?}"));
-    let report = validate::validate(
-        &d,
-        &p,
-        &pddl::Plan::new(steps.clone()),
-    )
-    .unwrap();
+    let report = validate::validate(&d, &p, &pddl::Plan::new(steps.clone())).unwrap();
     assert!(report.is_valid());
     let execution = cubeworld::execute(&d, &p, &steps).unwrap();
     assert!(!execution.success());

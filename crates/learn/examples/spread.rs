@@ -8,9 +8,9 @@
 //! Defaults: seeds 1 to 100, activities grouped as `settled` (`runs`: every Idle run an
 //! activity of its own). Also measures seed 7, the embedded default.
 
-use segment::Activity;
 use grounding::GroundingConfig;
 use learn::{levels, DomainOptions, Grouping, Library};
+use segment::Activity;
 use segment::ActivityTree;
 
 /// What one study's library looks like.

@@ -423,7 +423,10 @@ pub fn domain_name(prio: usize) -> String {
 pub fn per_type(operators: &[Ranked<'_>]) -> [usize; 5] {
     let mut n = [0; 5];
     for r in operators {
-        if let Some(i) = Activity::OPERATOR_ORDER.iter().position(|&a| a == r.operator().activity) {
+        if let Some(i) = Activity::OPERATOR_ORDER
+            .iter()
+            .position(|&a| a == r.operator().activity)
+        {
             n[i] += 1;
         }
     }

@@ -5,9 +5,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use segment::Activity;
 use grounding::GroundingConfig;
 use learn::{levels, DomainOptions, Grouping, Library, RecordingInfo};
+use segment::Activity;
 use segment::ActivityTree;
 
 /// A simulated demonstration ready to learn from: what `demoplan learn` gets from a
@@ -143,7 +143,10 @@ fn the_file_round_trips_and_counts_add_up() {
         .map(|r| learn::activities(&r.segmented.segments, library.grouping).len() as u64)
         .sum();
     assert_eq!(library.segments(), activities);
-    let by_type: u64 = Activity::OPERATOR_ORDER.iter().map(|&a| library.type_count(a)).sum();
+    let by_type: u64 = Activity::OPERATOR_ORDER
+        .iter()
+        .map(|&a| library.type_count(a))
+        .sum();
     assert_eq!(by_type, activities);
     // Provenance: one entry per counted activity.
     for e in library.entries() {

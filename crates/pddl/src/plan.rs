@@ -314,7 +314,10 @@ mod tests {
         let step = Step::new("stack", ["b", "a"]);
         assert_eq!(step.words(), "stack b a");
         assert_eq!(Step::from_words("stack  b a"), Some(step));
-        assert_eq!(Step::from_words("noop"), Some(Step::new("noop", [] as [&str; 0])));
+        assert_eq!(
+            Step::from_words("noop"),
+            Some(Step::new("noop", [] as [&str; 0]))
+        );
         assert_eq!(Step::from_words("  "), None);
     }
 }

@@ -4,13 +4,13 @@
 
 use recording::{Contact, EntityId, EntityState, Frame, Pose};
 
-use geometry::{Quat, V3};
 use crate::motion::{bump, bump_rate, min_jerk, min_jerk_rate, SlowNoise};
 use crate::params::SimParams;
 use crate::rng::Rng;
 use crate::script::{align_to_faces, turn, Goal, HandPlan, Plan, Support};
 use crate::study::Demonstration;
 use crate::truth::{Activity, HandTruth, Phase, TruthFrame};
+use geometry::{Quat, V3};
 
 const GRAVITY: f64 = 9.81;
 

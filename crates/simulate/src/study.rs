@@ -2,12 +2,12 @@
 
 use recording::{Entity, EntityId, EntityKind, Header, Pose, Quaternion, Vec3};
 
-use geometry::V3;
 use crate::params::{ParamError, SimParams};
 use crate::render::Frames;
 use crate::rng::Rng;
 use crate::script::{Plan, Planner, Support};
 use crate::truth::{TruthHeader, TRUTH_FORMAT_NAME, TRUTH_FORMAT_VERSION};
+use geometry::V3;
 
 /// A hand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -97,8 +97,7 @@ impl FastDownward {
                     match pddl::parse_plan(&plan) {
                         Ok(read) => run.plan = read.steps,
                         Err(e) => {
-                            run.outcome =
-                                Outcome::Error(format!("Fast Downward's sas_plan, {e}"))
+                            run.outcome = Outcome::Error(format!("Fast Downward's sas_plan, {e}"))
                         }
                     }
                     // Fast Downward's own verdict, from its cost line.

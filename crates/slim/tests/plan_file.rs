@@ -46,10 +46,7 @@ fn check(costs: Option<[u64; 2]>, expect_text: &str) {
 
 #[test]
 fn a_task_without_action_costs_is_unit_cost() {
-    check(
-        None,
-        "(drive a b)\n(drive b c)\n; cost = 2 (unit cost)\n",
-    );
+    check(None, "(drive a b)\n(drive b c)\n; cost = 2 (unit cost)\n");
 }
 
 #[test]

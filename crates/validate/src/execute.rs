@@ -5,8 +5,8 @@ use std::fmt;
 
 use pddl::{Atom, CostExpr, Domain, Effect, FunctionTerm, InitEntry, Literal, Problem, Term, Type};
 
-use pddl::{Plan, Step};
 use crate::world::World;
+use pddl::{Plan, Step};
 
 /// A ground atom, `(on a b)`; also a ground function term, `(road-length a b)`.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]

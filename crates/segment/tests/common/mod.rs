@@ -75,10 +75,7 @@ pub fn measure(demo: &Demonstration, config: &GroundingConfig, tree: &ActivityTr
     let nh = truth.first().map_or(0, |t| t.hands.len());
     for h in 0..nh {
         let hand = truth[0].hands[h].hand;
-        let labels: Vec<Activity> = truth
-            .iter()
-            .map(|t| t.hands[h].activity)
-            .collect();
+        let labels: Vec<Activity> = truth.iter().map(|t| t.hands[h].activity).collect();
         let predicted = frame_activities(&segments, hand, &times);
         let (a, c) = agreement(&times, &predicted, &labels, IGNORE);
         m.agree += a;

@@ -8,15 +8,15 @@ use pddl::{Domain, Problem};
 use recording::{Frame, Recording};
 use serde::Serialize;
 
-use crate::geometry::V3;
 use crate::motion::Script;
 use crate::plan::{candidates, Intent};
 use crate::symbolic::{
-    atom_text, fact_of, fact_text, ground_action, initial_atoms, layout, scene_objects, ActionType,
-    Atom, GroundAction,
+    atom_text, fact_of, fact_text, ground_action, initial_atoms, layout, scene_objects, Atom,
+    GroundAction,
 };
 use crate::world::{World, FRAME_RATE};
 use crate::ExecuteError;
+use geometry::V3;
 
 /// How long the scene stands still before the first step and after the last (s).
 const SETTLE: f64 = 0.4;
@@ -76,7 +76,7 @@ pub struct StepReport {
     pub arguments: Vec<String>,
     /// Its type.
     #[serde(rename = "type")]
-    pub kind: ActionType,
+    pub kind: recording::Activity,
     /// The hand that acts.
     pub hand: String,
     /// Time of the step's first and last frames (s).
@@ -265,7 +265,7 @@ impl Checks {
 pub fn execute(
     domain: &Domain,
     problem: &Problem,
-    plan: &[validate::Step],
+    plan: &[pddl::Step],
 ) -> Result<ExecutionReport, ExecuteError> {
     let objects = scene_objects(problem)?;
     let init = initial_atoms(problem);

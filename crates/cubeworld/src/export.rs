@@ -31,7 +31,7 @@ pub fn export(report: &ExecutionReport) -> Value {
                 "index": s.index,
                 "action": s.name,
                 "arguments": s.arguments,
-                "type": s.kind,
+                "type": s.kind.operator_name(),
                 "hand": s.hand,
                 "start": s.start,
                 "end": s.end,

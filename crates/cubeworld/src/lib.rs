@@ -31,7 +31,7 @@
 //!        (:init (handopen left_hand) (ontop cube_1 table))
 //!        (:goal (inhand left_hand cube_1)))",
 //! ).unwrap();
-//! let plan = [validate::Step::new("take", ["left_hand", "cube_1"])];
+//! let plan = [pddl::Step::new("take", ["left_hand", "cube_1"])];
 //! let report = cubeworld::execute(&domain, &problem, &plan).unwrap();
 //! assert!(report.steps[0].ok());
 //! assert!(report.goal.reached);
@@ -51,7 +51,6 @@ pub use execute::{
     execute, CubePose, ExecutionReport, FailedEffect, GoalReport, HandPose, StepReport,
 };
 pub use export::{export, EXPORT_FORMAT, EXPORT_VERSION};
-pub use symbolic::ActionType;
 pub use world::World;
 
 /// An input the cube world cannot execute.

@@ -1,7 +1,9 @@
 //! Motion primitives: a hand's script is a list of legs (quintic Hermite segments with
 //! a grip ramp), built from its current state.
 
-use crate::geometry::{Hermite, V3};
+use geometry::V3;
+
+use crate::geometry::Hermite;
 
 /// Speed of a hand that is moving (`handMove`): above the grounding's 0.11 m/s.
 pub const FAST: f64 = 0.15;

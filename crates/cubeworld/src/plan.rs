@@ -4,12 +4,11 @@
 //! copy of the world and keeps the one whose grounded frames give the action's effects.
 
 use grounding::{Fact, Predicate};
-use recording::EntityId;
+use recording::{Activity, EntityId};
 
-use crate::geometry::V3;
 use crate::motion::{Script, CREEP, FAST};
-use crate::symbolic::ActionType;
 use crate::world::{World, CUBE_SIZE, GRASP_HEIGHT, TABLE_HEIGHT};
+use geometry::V3;
 
 const UP: V3 = V3::new(0.0, 0.0, 1.0);
 const TOWARD_PERSON: V3 = V3::new(-1.0, 0.0, 0.0);
@@ -39,6 +38,16 @@ pub struct Intent {
     anchors: Vec<usize>,
 }
 
+/// Whether an action of this type may close the gripper on a cube.
+fn may_grasp(kind: Activity) -> bool {
+    matches!(kind, Activity::Take | Activity::Put)
+}
+
+/// Whether it may open the gripper and lower a held cube onto something.
+fn may_release(kind: Activity) -> bool {
+    matches!(kind, Activity::Put | Activity::Stack | Activity::Idle)
+}
+
 fn has(facts: &[Fact], p: Predicate, a: EntityId, b: EntityId) -> bool {
     facts
         .iter()
@@ -52,7 +61,7 @@ impl Intent {
     pub fn new(
         world: &World,
         hand: usize,
-        kind: ActionType,
+        kind: Activity,
         add: &[Fact],
         delete: &[Fact],
         after: &[Fact],
@@ -64,7 +73,7 @@ impl Intent {
             (i < world.cubes.len()).then_some(i)
         };
         let state = world.hands[hand];
-        let grasp = if kind.may_grasp() {
+        let grasp = if may_grasp(kind) {
             add.iter()
                 .filter(|f| f.predicate == Predicate::InHand && f.first() == he)
                 .find_map(|f| cube_of(f.second()))
@@ -75,16 +84,16 @@ impl Intent {
         let held = grasp.or(state.holding);
         let opens = has(add, Predicate::HandOpen, he, he);
         let closes = has(delete, Predicate::HandOpen, he, he);
-        let release = kind.may_release()
+        let release = may_release(kind)
             && held
                 .is_some_and(|c| opens || has(delete, Predicate::InHand, he, world.cube_entity(c)));
-        let open_empty = kind.may_release() && held.is_none() && opens && state.grip > 0.5;
-        let close_empty = kind.may_grasp() && grasp.is_none() && closes && state.grip < 0.5;
+        let open_empty = may_release(kind) && held.is_none() && opens && state.grip > 0.5;
+        let close_empty = may_grasp(kind) && grasp.is_none() && closes && state.grip < 0.5;
         let mut place = None;
         let mut lift = false;
         if let Some(c) = held {
             let ce = world.cube_entity(c);
-            if kind.may_release() {
+            if may_release(kind) {
                 place = add
                     .iter()
                     .filter(|f| {

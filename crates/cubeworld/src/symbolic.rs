@@ -5,64 +5,13 @@ use std::collections::BTreeSet;
 
 use grounding::{Fact, FactId, FactSpace, Predicate};
 use pddl::{Action, Domain, Effect, InitEntry, Problem, Term, Type};
-use recording::Header;
+use recording::{Activity, Header};
 
 use crate::world::{Layout, MAX_TOWERS};
 use crate::ExecuteError;
 
 /// A ground atom: predicate and object names, lowercase as PDDL has them.
 pub type Atom = (String, Vec<String>);
-
-/// The activity type of an action: its name without trailing digits.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ActionType {
-    /// Move towards a cube.
-    Reach,
-    /// Close the gripper on a cube.
-    Take,
-    /// Lift, carry or put down a cube.
-    Put,
-    /// Carry a cube onto another and let go.
-    Stack,
-    /// Start or stop, let go.
-    Idle,
-}
-
-impl ActionType {
-    /// The type of an action name (`put2` is a put), if it is one of the five.
-    pub fn of_name(name: &str) -> Option<ActionType> {
-        match name.trim_end_matches(|c: char| c.is_ascii_digit()) {
-            "reach" => Some(ActionType::Reach),
-            "take" => Some(ActionType::Take),
-            "put" => Some(ActionType::Put),
-            "stack" => Some(ActionType::Stack),
-            "idle" => Some(ActionType::Idle),
-            _ => None,
-        }
-    }
-
-    /// The lowercase name.
-    pub fn name(self) -> &'static str {
-        match self {
-            ActionType::Reach => "reach",
-            ActionType::Take => "take",
-            ActionType::Put => "put",
-            ActionType::Stack => "stack",
-            ActionType::Idle => "idle",
-        }
-    }
-
-    /// Whether this type of activity may close the gripper on a cube.
-    pub fn may_grasp(self) -> bool {
-        matches!(self, ActionType::Take | ActionType::Put)
-    }
-
-    /// Whether it may open the gripper and lower a held cube onto something.
-    pub fn may_release(self) -> bool {
-        matches!(self, ActionType::Put | ActionType::Stack | ActionType::Idle)
-    }
-}
 
 /// The objects of a problem by kind.
 #[derive(Debug, Clone, PartialEq)]
@@ -245,7 +194,7 @@ pub struct GroundAction {
     /// The arguments.
     pub args: Vec<String>,
     /// Its type.
-    pub kind: ActionType,
+    pub kind: Activity,
     /// Positive preconditions.
     pub pre_positive: Vec<Atom>,
     /// Negative preconditions (equality left out).
@@ -268,7 +217,7 @@ pub fn ground_action(
         .iter()
         .find(|a| a.name.as_str() == lower)
         .ok_or_else(|| ExecuteError::Plan(format!("the domain has no action `{lower}`")))?;
-    let kind = ActionType::of_name(&lower).ok_or_else(|| {
+    let kind = Activity::of_operator_name(&lower).ok_or_else(|| {
         ExecuteError::Plan(format!(
             "`{lower}` is not a reach, take, put, stack or idle action (its name without \
              trailing digits says its type)"

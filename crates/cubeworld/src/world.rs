@@ -4,7 +4,7 @@
 
 use recording::{Entity, EntityId, EntityKind, EntityState, Frame, Header, Pose, Quaternion};
 
-use crate::geometry::V3;
+use geometry::V3;
 
 /// Edge of a cube (m).
 pub const CUBE_SIZE: f64 = 0.05;
@@ -101,7 +101,7 @@ impl World {
         layout: &Layout,
     ) -> World {
         let mut entities = Vec::new();
-        let hs = V3::new(HAND_SIZE[0], HAND_SIZE[1], HAND_SIZE[2]).to_vec3();
+        let hs = recording::Vec3::from_f64(V3::new(HAND_SIZE[0], HAND_SIZE[1], HAND_SIZE[2]));
         for h in hands {
             entities.push(Entity {
                 name: h.clone(),
@@ -110,7 +110,7 @@ impl World {
                 fixed: None,
             });
         }
-        let cs = V3::new(CUBE_SIZE, CUBE_SIZE, CUBE_SIZE).to_vec3();
+        let cs = recording::Vec3::from_f64(V3::new(CUBE_SIZE, CUBE_SIZE, CUBE_SIZE));
         for c in cubes {
             entities.push(Entity {
                 name: c.clone(),
@@ -122,9 +122,9 @@ impl World {
         entities.push(Entity {
             name: table.to_string(),
             kind: EntityKind::Table,
-            size: V3::new(TABLE_DEPTH, TABLE_WIDTH, TABLE_HEIGHT).to_vec3(),
+            size: recording::Vec3::from_f64(V3::new(TABLE_DEPTH, TABLE_WIDTH, TABLE_HEIGHT)),
             fixed: Some(Pose {
-                position: V3::new(TABLE_X, 0.0, 0.5 * TABLE_HEIGHT).to_vec3(),
+                position: recording::Vec3::from_f64(V3::new(TABLE_X, 0.0, 0.5 * TABLE_HEIGHT)),
                 orientation: Quaternion::IDENTITY,
             }),
         });
@@ -459,10 +459,10 @@ impl World {
         for (h, hand) in self.hands.iter().enumerate() {
             frame.states[h] = Some(EntityState {
                 pose: Pose {
-                    position: hand.pos.to_vec3(),
+                    position: recording::Vec3::from_f64(hand.pos),
                     orientation: Quaternion::IDENTITY,
                 },
-                velocity: Some(hand.vel.to_vec3()),
+                velocity: Some(recording::Vec3::from_f64(hand.vel)),
                 grip: Some(hand.grip as f32),
                 holding: hand.holding.map(|c| self.cube_entity(c)),
             });
@@ -470,7 +470,7 @@ impl World {
         for (c, cube) in self.cubes.iter().enumerate() {
             frame.states[self.hands.len() + c] = Some(EntityState {
                 pose: Pose {
-                    position: cube.pos.to_vec3(),
+                    position: recording::Vec3::from_f64(cube.pos),
                     orientation: Quaternion::IDENTITY,
                 },
                 velocity: None,

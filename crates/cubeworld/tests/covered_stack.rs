@@ -15,7 +15,7 @@ const DOMAIN: &str = include_str!("fixtures/prio-4.pddl");
 fn run(problem: &str, plan: &str) -> cubeworld::ExecutionReport {
     let d = pddl::parse_domain(DOMAIN).unwrap();
     let p = pddl::parse_problem(problem).unwrap();
-    let plan = validate::parse_plan(plan).unwrap();
+    let plan = pddl::parse_plan(plan).unwrap();
     let valid = validate::validate(&d, &p, &plan).unwrap();
     assert!(valid.is_valid());
     cubeworld::execute(&d, &p, &plan.steps).unwrap()

@@ -52,7 +52,7 @@ fn paper_problem(goal: usize) -> pddl::Problem {
 }
 
 /// demoplan's plan for a task (A* with LM-cut), as plan steps.
-fn plan(domain: &pddl::Domain, problem: &pddl::Problem) -> Option<Vec<validate::Step>> {
+fn plan(domain: &pddl::Domain, problem: &pddl::Problem) -> Option<Vec<pddl::Step>> {
     pddl::check_problem(domain, problem).unwrap();
     let translate::Translation::Task(t) = translate::translate(domain, problem).unwrap() else {
         return None;
@@ -62,17 +62,7 @@ fn plan(domain: &pddl::Domain, problem: &pddl::Problem) -> Option<Vec<validate::
     let search::Outcome::Solved(p) = result.outcome else {
         return None;
     };
-    Some(
-        p.operators
-            .iter()
-            .map(|op| {
-                let name = &t.task.operators[op.index()].name;
-                let mut words = name.split_whitespace();
-                let action = words.next().unwrap().to_string();
-                validate::Step::new(action, words)
-            })
-            .collect(),
-    )
+    Some(translate::plan_steps(&t.task, &p.operators))
 }
 
 fn domain_of(library: &Library, prio: usize) -> pddl::Domain {
@@ -171,14 +161,7 @@ fn a_reach_that_grasps_is_valid_in_pddl_but_fails_in_the_cube_world() {
         .iter()
         .position(|s| s.action == "reach9")
         .unwrap_or_else(|| panic!("the plan does not use the corrupted reach: {steps:?}"));
-    let report = validate::validate(
-        &d,
-        &p,
-        &validate::Plan {
-            steps: steps.clone(),
-        },
-    )
-    .unwrap();
+    let report = validate::validate(&d, &p, &pddl::Plan::new(steps.clone())).unwrap();
     assert!(report.is_valid());
     let execution = cubeworld::execute(&d, &p, &steps).unwrap();
     assert!(!execution.success());

@@ -11,8 +11,7 @@
 fn a_stack_that_ends_moving_away_from_the_cube_executes() {
     let d = pddl::parse_domain(include_str!("fixtures/seed7-calibrated-prio-6.pddl")).unwrap();
     let p = pddl::parse_problem(include_str!("fixtures/goal-2.pddl")).unwrap();
-    let plan =
-        validate::parse_plan(include_str!("fixtures/lmcut-seed7-prio-6-goal-2.plan")).unwrap();
+    let plan = pddl::parse_plan(include_str!("fixtures/lmcut-seed7-prio-6-goal-2.plan")).unwrap();
     assert!(validate::validate(&d, &p, &plan).unwrap().is_valid());
     let report = cubeworld::execute(&d, &p, &plan.steps).unwrap();
     let failed: Vec<String> = report

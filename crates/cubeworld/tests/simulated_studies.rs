@@ -8,10 +8,11 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use recording::Activity;
 use std::time::Duration;
 
 use grounding::GroundingConfig;
-use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene, TYPE_ORDER};
+use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene};
 use segment::ActivityTree;
 
 /// Seeds tried: 20 studies; on each, the paper's goals 1 to 3 (towers of 2 to 4 cubes)
@@ -57,7 +58,7 @@ fn every_seed_plans_every_paper_goal_and_every_plan_executes() {
     for seed in SEEDS {
         let library = library(seed);
         // Every type of the paper's Table 1 is demonstrated, so priority 1 has a domain.
-        for a in TYPE_ORDER {
+        for a in Activity::OPERATOR_ORDER {
             assert!(library.type_count(a) > 0, "seed {seed}: no {a} activity");
         }
         for goal in GOALS {
@@ -84,17 +85,7 @@ fn every_seed_plans_every_paper_goal_and_every_plan_executes() {
                 "seed {seed}, goal {goal}: {} actions",
                 level.run.plan.len()
             );
-            let steps: Vec<validate::Step> = level
-                .run
-                .plan
-                .iter()
-                .map(|line| {
-                    let mut words = line.split_whitespace();
-                    let action = words.next().unwrap().to_string();
-                    validate::Step::new(action, words)
-                })
-                .collect();
-            let report = cubeworld::execute(&level.domain, &p, &steps).unwrap();
+            let report = cubeworld::execute(&level.domain, &p, &level.run.plan).unwrap();
             assert!(
                 report.success(),
                 "seed {seed}, goal {goal}, prio {}: the plan {:?} does not execute: step {:?}, goal {:?}",

@@ -1,12 +1,5 @@
-//! Writing output files.
-//!
-//! Every file is written to a temporary file in the same folder (`.NAME.demoplan-tmp-PID`)
-//! and renamed over its target, so a process killed at any moment leaves either the old
-//! file or the new one, never a half-written one: the rename is atomic. That guarantee is
-//! about the process; against a power loss or a kernel crash the data must also reach the
-//! disk before the rename, which only [`write_durably`] (the operator library) pays for
-//! with `fsync` of the file and of its folder. Other outputs (plans, figures, recordings)
-//! can be made again and skip the `fsync`s.
+//! Writing output files: through the `atomic-write` crate (a temporary file and a rename,
+//! never half-written; durable for the operator library), with its errors as exit codes.
 //!
 //! [`WriteLock`] is the advisory lock that keeps two learners from writing one library at
 //! once (`docs/reliability.md`).
@@ -41,111 +34,32 @@ pub fn stdout_failure(e: &std::io::Error) -> Failure {
 }
 
 /// Writes through a temporary file in the same folder and a rename, so that a killed
-/// process never leaves a half-written file.
+/// process never leaves a half-written file ([`atomic_write::write_atomically`]).
 pub fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {
-    write_via_temporary(path, false, |out| out.write_all(text.as_bytes()))
+    atomic_write::write_atomically(path, text).map_err(write_failure)
 }
 
-/// Like [`write_atomically`], and durable: the temporary file is flushed to the disk
-/// (`fsync`) before the rename and the folder after it, so that after a power loss the
-/// path holds the old or the new content too.
+/// Like [`write_atomically`], and durable ([`atomic_write::write_durably`]): after a power
+/// loss the path holds the old or the new content too.
 pub fn write_durably(path: &Path, text: &str) -> Result<(), Failure> {
-    write_via_temporary(path, true, |out| out.write_all(text.as_bytes()))
+    atomic_write::write_durably(path, text).map_err(write_failure)
 }
 
-/// Like [`write_atomically`], for output produced piece by piece: `produce` writes into a
-/// buffered temporary file that replaces `path` only once all of it is written.
+/// Like [`write_atomically`], for output produced piece by piece
+/// ([`atomic_write::write_atomically_with`]).
 pub fn write_atomically_with(
     path: &Path,
     produce: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> Result<(), Failure> {
-    write_via_temporary(path, false, produce)
+    atomic_write::write_atomically_with(path, produce).map_err(write_failure)
 }
 
-/// The folder of `path` and its file name.
-fn folder_and_name(path: &Path) -> (&Path, String) {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    (dir, name)
+/// A file that could not be written: an I/O error (35) naming it.
+fn write_failure(e: atomic_write::WriteError) -> Failure {
+    Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string())
 }
 
-/// The prefix of the temporary files of writers of `path`, before the writer's pid.
-fn temporary_prefix(name: &str) -> String {
-    format!(".{name}.demoplan-tmp-")
-}
-
-fn write_via_temporary(
-    path: &Path,
-    durable: bool,
-    produce: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-) -> Result<(), Failure> {
-    let (dir, name) = folder_and_name(path);
-    let tmp = dir.join(format!("{}{}", temporary_prefix(&name), std::process::id()));
-    let fail = |e: std::io::Error| {
-        let _ = std::fs::remove_file(&tmp);
-        Failure::plain(
-            ExitCode::CRITICAL_ERROR,
-            format!("cannot write {}: {e}", path.display()),
-        )
-    };
-    let file = File::create(&tmp).map_err(fail)?;
-    let mut out = std::io::BufWriter::with_capacity(1 << 20, file);
-    produce(&mut out).map_err(fail)?;
-    let file = out.into_inner().map_err(|e| fail(e.into_error()))?;
-    if durable {
-        file.sync_all().map_err(fail)?;
-    }
-    drop(file);
-    std::fs::rename(&tmp, path).map_err(fail)?;
-    if durable {
-        sync_folder(dir);
-    }
-    Ok(())
-}
-
-/// Makes a rename in `dir` durable. Best effort: some systems cannot open or sync a
-/// folder, and the file is in place either way.
-fn sync_folder(dir: &Path) {
-    if cfg!(unix) {
-        if let Ok(d) = File::open(dir) {
-            let _ = d.sync_all();
-        }
-    }
-}
-
-/// Removes the temporary files that writers of `path` killed before their rename left
-/// behind (`.NAME.demoplan-tmp-PID`). They never damage anything (each writer uses its own
-/// name and removes it on failure), they only take space. Call it only while holding the
-/// [`WriteLock`] of `path`: every other writer of `path` holds it while its temporary file
-/// exists, so those found then are stale. Returns how many were removed.
-pub fn remove_stale_temporaries(path: &Path) -> usize {
-    let (dir, name) = folder_and_name(path);
-    let prefix = temporary_prefix(&name);
-    let own = std::process::id().to_string();
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return 0;
-    };
-    let mut removed = 0;
-    for entry in entries.flatten() {
-        let file_name = entry.file_name();
-        let Some(pid) = file_name.to_str().and_then(|n| n.strip_prefix(&prefix)) else {
-            continue;
-        };
-        if pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) || pid == own {
-            continue;
-        }
-        if std::fs::remove_file(entry.path()).is_ok() {
-            removed += 1;
-        }
-    }
-    removed
-}
+pub use atomic_write::remove_stale_temporaries;
 
 /// An advisory lock on `PATH.lock` (an exclusive `flock` on Unix, `LockFileEx` on
 /// Windows), held by a writer of `PATH` from reading it until its new content is renamed

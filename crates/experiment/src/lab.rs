@@ -213,6 +213,7 @@ impl Planners {
                     record.cost = step.cost;
                     record.length = step.length;
                     record.plan = step.plan;
+                    record.unit_cost = step.unit_cost;
                     record.executed = step.executed;
                     "solved"
                 }
@@ -271,6 +272,7 @@ fn fill(
         record.cost = run.cost;
         record.length = Some(run.plan.len());
         record.plan = run.plan.clone();
+        record.unit_cost = run.cost_kind == pddl::CostKind::Unit;
         record.executed = execute(domain, problem, &run.plan);
     }
 }
@@ -329,16 +331,12 @@ pub fn tower_problem(conditions: &Conditions) -> Result<pddl::Problem, Experimen
 
 /// Checks a plan in the cube world: every step's effects, and the goal, hold in the
 /// geometry re-grounded; `None` when the cube world cannot run it at all.
-pub fn execute(domain: &pddl::Domain, problem: &pddl::Problem, plan: &[String]) -> Option<bool> {
-    let steps: Vec<validate::Step> = plan
-        .iter()
-        .map(|line| {
-            let mut words = line.split_whitespace().map(str::to_string);
-            let action = words.next().unwrap_or_default();
-            validate::Step::new(action, words.collect::<Vec<String>>())
-        })
-        .collect();
-    cubeworld::execute(domain, problem, &steps)
+pub fn execute(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    plan: &[pddl::Step],
+) -> Option<bool> {
+    cubeworld::execute(domain, problem, plan)
         .ok()
         .map(|report| report.success())
 }

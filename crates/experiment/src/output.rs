@@ -1,5 +1,6 @@
-//! Writing the experiment's files: through a temporary file and a rename, so that a
-//! killed run leaves the old file or the new one, never half of one.
+//! Writing the experiment's files: through a temporary file and a rename
+//! (`atomic-write`), so that a killed run leaves the old file or the new one, never half
+//! of one.
 
 use std::path::Path;
 
@@ -26,17 +27,10 @@ pub(crate) fn write_png(path: &Path, figure: &report::Figure) -> Result<(), Expe
     write_file(path, &png)
 }
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`.
+/// Writes `bytes` through a temporary file beside `path` and a rename
+/// ([`atomic_write::write_atomically`]).
 pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), ExperimentError> {
-    let mut name = path.file_name().unwrap_or_default().to_os_string();
-    name.push(".demoplan-tmp");
-    let tmp = path.with_file_name(name);
-    std::fs::write(&tmp, bytes)
-        .and_then(|()| std::fs::rename(&tmp, path))
-        .map_err(|e| {
-            let _ = std::fs::remove_file(&tmp);
-            io_error(path, e)
-        })
+    atomic_write::write_atomically(path, bytes).map_err(|e| io_error(path, e.source))
 }
 
 pub(crate) fn write_text(path: &Path, text: &str) -> Result<(), ExperimentError> {

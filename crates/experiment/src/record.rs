@@ -103,9 +103,13 @@ pub struct RunRecord {
     pub peak_memory_kb: Option<u64>,
     /// The plan executed in the cube world: its effects and goal held.
     pub executed: Option<bool>,
-    /// The plan's actions.
-    #[serde(default)]
-    pub plan: Vec<String>,
+    /// The plan's steps, written as their words (`"reach left_hand cube_2"`).
+    #[serde(default, with = "plan_words")]
+    pub plan: Vec<pddl::Step>,
+    /// Whether every operator of the task costs 1, so that the plan file says `unit
+    /// cost` (absent from the line when false: `general cost`).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub unit_cost: bool,
     /// Algorithm 1 only: every level tried, in order.
     #[serde(default)]
     pub widening: Vec<WideningStep>,
@@ -135,6 +139,7 @@ impl RunRecord {
             peak_memory_kb: None,
             executed: None,
             plan: Vec::new(),
+            unit_cost: false,
             widening: Vec::new(),
             error: None,
         }
@@ -286,6 +291,26 @@ pub fn append_record(path: &Path, record: &RunRecord) -> Result<(), ExperimentEr
     file.sync_data().map_err(io)
 }
 
+/// A plan in a record: each step as its words, `"reach left_hand cube_2"`, the form
+/// results files have always had.
+mod plan_words {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(plan: &[pddl::Step], s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(plan.iter().map(pddl::Step::words))
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<pddl::Step>, D::Error> {
+        Vec::<String>::deserialize(d)?
+            .iter()
+            .map(|words| {
+                pddl::Step::from_words(words)
+                    .ok_or_else(|| serde::de::Error::custom("a plan step without an action"))
+            })
+            .collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -313,7 +338,8 @@ mod tests {
             length: Some(5),
             peak_memory_kb: Some(1024),
             executed: Some(true),
-            plan: vec!["reach left_hand cube_2".into()],
+            plan: vec![pddl::Step::new("reach", ["left_hand", "cube_2"])],
+            unit_cost: false,
             widening: vec![],
             error: None,
         }

@@ -233,13 +233,13 @@ pub fn reproduce(
         if r.level_choice() == Some(LevelChoice::Algorithm1) {
             continue;
         }
-        let mut text = String::new();
-        for a in &r.plan {
-            let _ = writeln!(text, "({a})");
-        }
-        if let Some(c) = r.cost {
-            let _ = writeln!(text, "; cost = {c} (general cost)");
-        }
+        let Some(cost) = r.cost else { continue };
+        let kind = if r.unit_cost {
+            pddl::CostKind::Unit
+        } else {
+            pddl::CostKind::General
+        };
+        let text = pddl::write_plan(&r.plan, cost, kind);
         write_text(
             &out.join(format!(
                 "plans/{}-prio-{}-goal-{}.plan",

@@ -28,7 +28,7 @@
 use std::collections::BTreeMap;
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Grouping, Library, TYPE_ORDER};
+use learn::{levels, DomainOptions, Grouping, Library};
 use segment::{Activity, ActivityTree};
 use simulate::SimParams;
 
@@ -62,7 +62,7 @@ struct Shape {
     /// Counts of the most frequent and the second `Put` operator (the paper's 12 and 4).
     put: u64,
     put2: u64,
-    /// Per type (TYPE_ORDER): the share of the most frequent operator.
+    /// Per type (`Activity::OPERATOR_ORDER`): the share of the most frequent operator.
     top_share: [f64; 5],
     levels: Vec<usize>,
 }
@@ -81,7 +81,7 @@ fn library(params: &SimParams, seed: u64) -> Result<Library, String> {
 
 fn shape(library: &Library) -> Shape {
     let mut top_share = [0.0; 5];
-    for (i, a) in TYPE_ORDER.iter().enumerate() {
+    for (i, a) in Activity::OPERATOR_ORDER.iter().enumerate() {
         if let Some(top) = library.ranked_type(*a).first() {
             top_share[i] = top.count() as f64 / library.type_count(*a).max(1) as f64;
         }
@@ -192,7 +192,7 @@ fn report(params: &SimParams, seeds: &[u64]) -> Result<(), String> {
     println!("| **not targeted** | | | | | | |");
     println!("{}", row("count of `put`", col(&|s| s.put as f64), "12"));
     println!("{}", row("count of `put2`", col(&|s| s.put2 as f64), "4"));
-    for (i, a) in TYPE_ORDER.iter().enumerate() {
+    for (i, a) in Activity::OPERATOR_ORDER.iter().enumerate() {
         println!(
             "{}",
             row(

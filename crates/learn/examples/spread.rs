@@ -9,14 +9,15 @@
 //! activity of its own). Also measures seed 7, the embedded default.
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Grouping, Library, TYPE_ORDER};
+use learn::{levels, DomainOptions, Grouping, Library};
+use segment::Activity;
 use segment::ActivityTree;
 
 /// What one study's library looks like.
 struct Shape {
     activities: u64,
     operators: usize,
-    /// Per type (TYPE_ORDER): the share of the most frequent operator.
+    /// Per type (`Activity::OPERATOR_ORDER`): the share of the most frequent operator.
     top_share: [f64; 5],
     seen_once: f64,
     levels: Vec<usize>,
@@ -36,7 +37,7 @@ fn library(seed: u64, grouping: Grouping) -> Option<Library> {
 
 fn shape(library: &Library) -> Shape {
     let mut top_share = [0.0; 5];
-    for (i, a) in TYPE_ORDER.iter().enumerate() {
+    for (i, a) in Activity::OPERATOR_ORDER.iter().enumerate() {
         let ranked = library.ranked_type(*a);
         let total = library.type_count(*a);
         if let Some(top) = ranked.first() {
@@ -91,7 +92,7 @@ fn main() {
     if let Some(lib) = library(simulate::DEFAULT_SEED, grouping) {
         let s = shape(&lib);
         println!("Seed {} (the embedded default):", simulate::DEFAULT_SEED);
-        for a in TYPE_ORDER {
+        for a in Activity::OPERATOR_ORDER {
             let ranked = lib.ranked_type(a);
             let counts: Vec<String> = ranked.iter().map(|r| r.count().to_string()).collect();
             println!(
@@ -123,7 +124,7 @@ fn main() {
     let col = |f: &dyn Fn(&Shape) -> f64| quantiles(shapes.iter().map(f).collect());
     println!("activities: {}  (>= 100)", col(&|s| s.activities as f64));
     println!("operators: {}  (20 to 40)", col(&|s| s.operators as f64));
-    for (i, a) in TYPE_ORDER.iter().enumerate() {
+    for (i, a) in Activity::OPERATOR_ORDER.iter().enumerate() {
         println!(
             "top share {}: {}  (>= 0.40)",
             a.name(),

@@ -4,7 +4,9 @@
 
 use std::fmt::Write as _;
 
-use crate::{domain, per_type, Library, Ranked, TYPE_ORDER};
+use segment::Activity;
+
+use crate::{domain, per_type, Library, Ranked};
 
 /// Per type: activities, operators, and each operator's count and cost.
 pub fn summary_table(library: &Library) -> String {
@@ -14,7 +16,7 @@ pub fn summary_table(library: &Library) -> String {
         "{:<6} {:>10} {:>9}  operators (name count/cost)",
         "type", "activities", "operators"
     );
-    for a in TYPE_ORDER {
+    for a in Activity::OPERATOR_ORDER {
         let ranked = library.ranked_type(a);
         let list: Vec<String> = ranked
             .iter()
@@ -179,10 +181,10 @@ pub fn cards_markdown(library: &Library) -> String {
 /// A domain file's text with a comment block saying what it is.
 pub fn domain_text(library: &Library, operators: &[Ranked<'_>], what: &str) -> String {
     let counts = per_type(operators);
-    let per: Vec<String> = TYPE_ORDER
+    let per: Vec<String> = Activity::OPERATOR_ORDER
         .iter()
         .zip(counts)
-        .map(|(a, n)| format!("{} {n}", a.name().to_ascii_lowercase()))
+        .map(|(a, n)| format!("{} {n}", a.operator_name()))
         .collect();
     format!(
         "; demoplan domain: {what}, {} operators ({}), from {} activities of {} recordings.\n\

@@ -6,9 +6,9 @@ use pddl::{
     Action, Atom, CostExpr, Domain, Effect, FunctionDecl, FunctionTerm, InitEntry, Literal, Metric,
     Name, Number, PredicateDecl, Problem, Requirement, Span, Term, Type, Typed,
 };
-use recording::{EntityKind, Header};
+use recording::{Activity, EntityKind, Header};
 
-use crate::library::{Library, Ranked, TYPE_ORDER};
+use crate::library::{Library, Ranked};
 use crate::operator::LiftedFact;
 
 /// Which operators may go into domains.
@@ -19,9 +19,9 @@ pub struct DomainOptions {
     pub keep_without_effects: bool,
 }
 
-/// The operators eligible for domains, per type in [`TYPE_ORDER`], most frequent first.
+/// The operators eligible for domains, per type in [`Activity::OPERATOR_ORDER`], most frequent first.
 fn eligible<'a>(library: &'a Library, options: DomainOptions) -> Vec<Vec<Ranked<'a>>> {
-    TYPE_ORDER
+    Activity::OPERATOR_ORDER
         .iter()
         .map(|&a| {
             library
@@ -35,7 +35,7 @@ fn eligible<'a>(library: &'a Library, options: DomainOptions) -> Vec<Vec<Ranked<
 
 /// The paper's `OperatorSubset(O, prio)`: per type, the `prio` most frequent operators
 /// and every operator whose count equals that of the `prio`-th (ties are all in); a type
-/// with fewer operators gives all of them. Types in [`TYPE_ORDER`], each most frequent
+/// with fewer operators gives all of them. Types in [`Activity::OPERATOR_ORDER`], each most frequent
 /// first.
 pub fn operator_subset(library: &Library, prio: usize, options: DomainOptions) -> Vec<Ranked<'_>> {
     let mut subset = Vec::new();
@@ -419,11 +419,14 @@ pub fn domain_name(prio: usize) -> String {
     format!("demoplan-prio{prio}")
 }
 
-/// Operators per type of a set of ranked operators, in [`TYPE_ORDER`].
+/// Operators per type of a set of ranked operators, in [`Activity::OPERATOR_ORDER`].
 pub fn per_type(operators: &[Ranked<'_>]) -> [usize; 5] {
     let mut n = [0; 5];
     for r in operators {
-        if let Some(i) = TYPE_ORDER.iter().position(|&a| a == r.operator().activity) {
+        if let Some(i) = Activity::OPERATOR_ORDER
+            .iter()
+            .position(|&a| a == r.operator().activity)
+        {
             n[i] += 1;
         }
     }
@@ -434,7 +437,6 @@ pub fn per_type(operators: &[Ranked<'_>]) -> [usize; 5] {
 mod tests {
     use super::*;
     use crate::operator::{Operator, ParamType};
-    use segment::Activity;
 
     /// A distinct operator of a type: `k` tells them apart (the hand moves or not, and
     /// the number of cubes); `effects` whether it changes anything.

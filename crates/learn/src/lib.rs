@@ -41,7 +41,7 @@ pub use domain::{
 pub use hash::{stable_hash, StableHasher};
 pub use library::{
     cost, display_name, Added, Entry, Library, LibraryError, Provenance, Ranked, RecordingInfo,
-    DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION, TYPE_ORDER,
+    DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION,
 };
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
 pub use pipeline::{

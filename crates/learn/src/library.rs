@@ -21,16 +21,6 @@ pub const FORMAT_VERSION: u32 = 1;
 /// The paper's lambda: the largest action cost.
 pub const DEFAULT_LAMBDA: u32 = 100;
 
-/// Activity types in the order tables, domains and cards list them: the order of a
-/// demonstration (reach, take, put, stack), then idle.
-pub const TYPE_ORDER: [Activity; 5] = [
-    Activity::Reach,
-    Activity::Take,
-    Activity::Put,
-    Activity::Stack,
-    Activity::Idle,
-];
-
 /// A recording the library has learned from. Its content hash keeps it from being
 /// counted twice.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
@@ -121,9 +111,9 @@ impl Ranked<'_> {
 
 /// `put` for rank 1, `put2` for rank 2, ...
 pub fn display_name(activity: Activity, rank: usize) -> String {
-    let base = activity.name().to_ascii_lowercase();
+    let base = activity.operator_name();
     if rank <= 1 {
-        base
+        base.to_string()
     } else {
         format!("{base}{rank}")
     }
@@ -358,9 +348,9 @@ impl Library {
             .collect()
     }
 
-    /// Every operator ranked, types in [`TYPE_ORDER`].
+    /// Every operator ranked, types in [`Activity::OPERATOR_ORDER`].
     pub fn ranked(&self) -> Vec<Ranked<'_>> {
-        TYPE_ORDER
+        Activity::OPERATOR_ORDER
             .iter()
             .flat_map(|&a| self.ranked_type(a))
             .collect()
@@ -373,7 +363,7 @@ impl Library {
             version: FORMAT_VERSION,
             lambda: self.lambda,
             activities: self.grouping.name().to_string(),
-            type_counts: TYPE_ORDER
+            type_counts: Activity::OPERATOR_ORDER
                 .iter()
                 .map(|&a| (a.name().to_string(), self.type_count(a)))
                 .collect(),

@@ -6,7 +6,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use grounding::GroundingConfig;
-use learn::{levels, DomainOptions, Grouping, Library, RecordingInfo, TYPE_ORDER};
+use learn::{levels, DomainOptions, Grouping, Library, RecordingInfo};
+use segment::Activity;
 use segment::ActivityTree;
 
 /// A simulated demonstration ready to learn from: what `demoplan learn` gets from a
@@ -142,7 +143,10 @@ fn the_file_round_trips_and_counts_add_up() {
         .map(|r| learn::activities(&r.segmented.segments, library.grouping).len() as u64)
         .sum();
     assert_eq!(library.segments(), activities);
-    let by_type: u64 = TYPE_ORDER.iter().map(|&a| library.type_count(a)).sum();
+    let by_type: u64 = Activity::OPERATOR_ORDER
+        .iter()
+        .map(|&a| library.type_count(a))
+        .sum();
     assert_eq!(by_type, activities);
     // Provenance: one entry per counted activity.
     for e in library.entries() {
@@ -175,7 +179,7 @@ fn every_studys_library_has_nested_levels_ranked_by_count() {
             .map(|l| l.operators.len())
             .collect();
         let all_levels = levels(&library, DomainOptions::default());
-        for a in TYPE_ORDER {
+        for a in Activity::OPERATOR_ORDER {
             let ranked = library.ranked_type(a);
             assert!(!ranked.is_empty(), "seed {seed}: no {a} operator");
             assert_eq!(

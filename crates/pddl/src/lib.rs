@@ -27,12 +27,14 @@ mod check;
 mod error;
 mod lexer;
 mod parser;
+mod plan;
 mod span;
 mod writer;
 
 pub use ast::*;
 pub use error::{ErrorKind, PddlError};
 pub use parser::PddlFile;
+pub use plan::{parse_plan, write_plan, CostKind, Plan, PlanError, PlanErrorKind, Step};
 pub use span::Span;
 
 /// Parses and checks a domain: its syntax, and that every name it uses is declared.

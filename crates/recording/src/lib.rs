@@ -52,6 +52,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod activity;
 mod check;
 mod error;
 mod model;
@@ -60,6 +61,7 @@ mod reader;
 mod summary;
 mod writer;
 
+pub use activity::Activity;
 pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_NAME_LEN};
 pub use error::{ErrorKind, ReadError, WriteError};
 pub use model::{

@@ -74,6 +74,20 @@ pub struct Vec3 {
 }
 
 impl Vec3 {
+    /// The `f64` vector rounded to the storage type (the nearest `f32` per component).
+    pub fn from_f64(v: geometry::V3) -> Vec3 {
+        Vec3 {
+            x: v.x as f32,
+            y: v.y as f32,
+            z: v.z as f32,
+        }
+    }
+
+    /// As the `f64` vector computations use (exact).
+    pub fn to_f64(self) -> geometry::V3 {
+        geometry::V3::new(f64::from(self.x), f64::from(self.y), f64::from(self.z))
+    }
+
     /// The zero vector.
     pub const ZERO: Vec3 = Vec3 {
         x: 0.0,
@@ -158,6 +172,27 @@ impl Default for Quaternion {
 }
 
 impl Quaternion {
+    /// The `f64` quaternion rounded to the storage type (the nearest `f32` per
+    /// component).
+    pub fn from_f64(q: geometry::Quat) -> Quaternion {
+        Quaternion {
+            x: q.x as f32,
+            y: q.y as f32,
+            z: q.z as f32,
+            w: q.w as f32,
+        }
+    }
+
+    /// As the `f64` quaternion computations use (exact).
+    pub fn to_f64(self) -> geometry::Quat {
+        geometry::Quat {
+            x: f64::from(self.x),
+            y: f64::from(self.y),
+            z: f64::from(self.z),
+            w: f64::from(self.w),
+        }
+    }
+
     /// No rotation.
     pub const IDENTITY: Quaternion = Quaternion {
         x: 0.0,

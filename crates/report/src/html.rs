@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use crate::model::{
     domain_label, format_limit, format_seconds, planner_label, slimming_ratio_by, time_cell_by,
-    Experiment, Measure, Outcome, Run, TYPE_NAMES,
+    Experiment, Measure, Outcome, Run,
 };
 pub use crate::paper::{PAPER_IPDB, PAPER_LMCUT, PAPER_OPERATORS, PAPER_TITLE};
 
@@ -379,8 +379,8 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
     if !exp.levels.is_empty() {
         s.push_str("<h2>Domains</h2>\n<p>Operators per type in the domain of each priority level (as the paper's Figure 3).</p>\n");
         s.push_str("<table class=\"levels\">\n<thead><tr><th>domain</th><th>priority</th><th>operators</th>");
-        for t in TYPE_NAMES {
-            let _ = write!(s, "<th>{t}</th>");
+        for t in recording::Activity::OPERATOR_ORDER {
+            let _ = write!(s, "<th>{}</th>", t.operator_name());
         }
         s.push_str("</tr></thead>\n<tbody>\n");
         let mut levels = exp.levels.clone();

@@ -45,7 +45,7 @@ pub use html::{
 pub use model::{
     domain_label, format_limit, format_seconds, planner_label, ratio, ratio_by, slimming_ratio,
     slimming_ratio_by, time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome,
-    Ratio, Run, PLANNER_ORDER, TYPE_NAMES,
+    Ratio, Run, PLANNER_ORDER,
 };
 pub use plots::{
     decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,

@@ -4,9 +4,6 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The operator types in the order of [`Level::per_type`].
-pub const TYPE_NAMES: [&str; 5] = ["reach", "take", "put", "stack", "idle"];
-
 /// The planners in the order the report shows them: the paper's Table 3 (iPDB) before
 /// Table 4 (LM-cut), demoplan's own planner before Fast Downward.
 pub const PLANNER_ORDER: [&str; 4] = ["ipdb", "lmcut", "fd-ipdb", "fd-lmcut"];
@@ -91,7 +88,7 @@ pub enum Outcome {
 }
 
 /// One priority level's domain: its operator count, per type in the order of
-/// [`TYPE_NAMES`] (reach, take, put, stack, idle).
+/// [`recording::Activity::OPERATOR_ORDER`] (reach, take, put, stack, idle).
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Level {
     pub prio: usize,

@@ -5,7 +5,6 @@
 use crate::draw::{pt, text_width, Anchor, Color, Figure, Point, Stroke, Text};
 use crate::model::{
     domain_label, format_limit, planner_label, Experiment, Goal, Level, Measure, Outcome, Run,
-    TYPE_NAMES,
 };
 
 /// Line colours for domains, by priority order (Okabe-Ito, readable when printed grey).
@@ -639,7 +638,7 @@ pub fn operators_figure(levels: &[Level]) -> Figure {
         text(
             &mut fig,
             pt(lx + 26.0, ly),
-            TYPE_NAMES[t],
+            recording::Activity::OPERATOR_ORDER[t].operator_name(),
             2,
             Anchor::Start,
             INK,

@@ -6,60 +6,7 @@ use std::fmt;
 use grounding::HandFacts;
 use serde::{Deserialize, Serialize};
 
-/// The paper's hand activities (Table 1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum Activity {
-    /// Moving, acting on an object, holding an object.
-    Stack,
-    /// Nothing acted on, nothing in hand (moving or not); also any tuple no rule matches.
-    Idle,
-    /// Moving, acting on an object, nothing in hand.
-    Reach,
-    /// Moving, nothing acted on, holding an object.
-    Put,
-    /// Not moving, nothing acted on, holding an object.
-    Take,
-}
-
-impl Activity {
-    /// Every activity, in the order of the paper's Table 1.
-    pub const ALL: [Activity; 5] = [
-        Activity::Stack,
-        Activity::Idle,
-        Activity::Reach,
-        Activity::Put,
-        Activity::Take,
-    ];
-
-    /// `Stack`, `Idle`, `Reach`, `Put`, `Take`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Activity::Stack => "Stack",
-            Activity::Idle => "Idle",
-            Activity::Reach => "Reach",
-            Activity::Put => "Put",
-            Activity::Take => "Take",
-        }
-    }
-
-    /// The activity with this name, ignoring case.
-    pub fn from_name(name: &str) -> Option<Activity> {
-        Activity::ALL
-            .into_iter()
-            .find(|a| a.name().eq_ignore_ascii_case(name))
-    }
-
-    /// Position in [`Activity::ALL`].
-    pub fn index(self) -> usize {
-        self as usize
-    }
-}
-
-impl fmt::Display for Activity {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
+pub use recording::Activity;
 
 /// A nominal attribute: a name and its values.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]

@@ -32,7 +32,6 @@
 //! # Ok::<(), simulate::ParamError>(())
 //! ```
 
-mod geometry;
 mod manifest;
 mod motion;
 mod params;

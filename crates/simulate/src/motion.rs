@@ -7,8 +7,8 @@
 //! overlap in time blend into one smooth motion that does not stop in between (a grasp
 //! on the fly, a reach redirected to another cube); separate ones stop in between.
 
-use crate::geometry::V3;
 use crate::rng::Rng;
+use geometry::V3;
 
 /// The minimum-jerk position profile on `τ ∈ [0, 1]` (clamped outside).
 pub(crate) fn min_jerk(tau: f64) -> f64 {

@@ -4,13 +4,13 @@
 
 use recording::{Contact, EntityId, EntityState, Frame, Pose};
 
-use crate::geometry::{Rot, V3};
 use crate::motion::{bump, bump_rate, min_jerk, min_jerk_rate, SlowNoise};
 use crate::params::SimParams;
 use crate::rng::Rng;
 use crate::script::{align_to_faces, turn, Goal, HandPlan, Plan, Support};
 use crate::study::Demonstration;
 use crate::truth::{Activity, HandTruth, Phase, TruthFrame};
+use geometry::{Quat, V3};
 
 const GRAVITY: f64 = 9.81;
 
@@ -35,7 +35,7 @@ fn quantise_v(v: V3, step: f64) -> recording::Vec3 {
     )
 }
 
-fn quantise_r(r: Rot) -> recording::Quaternion {
+fn quantise_r(r: Quat) -> recording::Quaternion {
     let r = r.canonical();
     recording::Quaternion::new(
         quantise(r.x, ROTATION_STEP),
@@ -76,7 +76,7 @@ struct Held {
     /// The cube's centre in the hand's frame.
     offset: V3,
     /// The cube's rotation relative to the hand's.
-    rel: Rot,
+    rel: Quat,
 }
 
 #[derive(Debug, Clone)]
@@ -94,7 +94,7 @@ struct HandSim {
     // Noise-free state at the current step.
     pos: V3,
     vel: V3,
-    rot: Rot,
+    rot: Quat,
     g: f64,
 }
 
@@ -108,7 +108,7 @@ enum CubeState {
 #[derive(Debug, Clone, Copy)]
 struct CubeSim {
     pos: V3,
-    rot: Rot,
+    rot: Quat,
     state: CubeState,
 }
 
@@ -157,7 +157,7 @@ impl<'a> Frames<'a> {
                 rng,
                 pos: hp.rest,
                 vel: V3::ZERO,
-                rot: Rot::IDENTITY,
+                rot: Quat::IDENTITY,
                 g: hp.grip_start,
             };
             // The base is the rest pose; the drift is added when the hand is evaluated.
@@ -170,7 +170,7 @@ impl<'a> Frames<'a> {
             .iter()
             .map(|&(pos, yaw)| CubeSim {
                 pos,
-                rot: Rot::from_yaw(yaw),
+                rot: Quat::from_yaw(yaw),
                 state: CubeState::Resting,
             })
             .collect::<Vec<_>>();
@@ -374,7 +374,7 @@ impl<'a> Frames<'a> {
         }
         let rest_z = top + half;
         let cube = &mut self.cubes[c];
-        cube.rot = Rot::from_yaw(cube.rot.yaw());
+        cube.rot = Quat::from_yaw(cube.rot.yaw());
         if cube.pos.z <= rest_z {
             cube.pos.z = rest_z;
             cube.state = CubeState::Resting;
@@ -455,7 +455,7 @@ impl<'a> Frames<'a> {
                 };
                 let hand_yaw = cube_yaw - rel_yaw;
                 let wobble = hp.wobble.at(t_end);
-                let rot_end = Rot::from_euler(wobble.x, wobble.y, hand_yaw);
+                let rot_end = Quat::from_euler(wobble.x, wobble.y, hand_yaw);
                 let palm = centre - rot_end.rotate(offset);
                 let d = palm - drift - fin_pos;
                 [d.x, d.y, d.z, hand_yaw - fin[3]]
@@ -470,7 +470,7 @@ impl<'a> Frames<'a> {
         frame.clear(n);
         frame.time = t;
         let rot_sd = p.hand_rot_noise_deg.to_radians();
-        let mut observed = [(V3::ZERO, Rot::IDENTITY); 2];
+        let mut observed = [(V3::ZERO, Quat::IDENTITY); 2];
         for (i, seen) in observed.iter_mut().enumerate() {
             let h = &mut self.hands[i];
             let slow = h.noise.step(&mut h.rng);
@@ -487,7 +487,7 @@ impl<'a> Frames<'a> {
                 h.rng.gauss(0.0, rot_sd),
                 h.rng.gauss(0.0, rot_sd),
             );
-            let rot = h.rot.mul(Rot::from_rotation_vector(wrong)).normalised();
+            let rot = h.rot.mul(Quat::from_rotation_vector(wrong)).normalised();
             let vel = h.vel
                 + slow_rate
                 + V3::new(
@@ -673,7 +673,7 @@ impl HandSim {
         let wobble = hp.wobble.at(t);
         self.pos = pos + drift;
         self.vel = vel + drift_rate;
-        self.rot = Rot::from_euler(wobble.x, wobble.y, yaw);
+        self.rot = Quat::from_euler(wobble.x, wobble.y, yaw);
         self.g = self.grip.at(t);
     }
 }

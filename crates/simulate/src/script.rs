@@ -6,12 +6,12 @@
 //! things really are then (a person corrects by sight). Durations are fixed here, from
 //! planned distances.
 
-use crate::geometry::{wrap_angle, V3};
 use crate::motion::{min_jerk, Drift};
 use crate::params::{Interval, SimParams};
 use crate::rng::Rng;
 use crate::study::{Participant, Side};
 use crate::truth::Phase;
+use geometry::{wrap_angle, V3};
 
 /// Where a cube is put: on another cube, or on the table at (x, y).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -2,12 +2,12 @@
 
 use recording::{Entity, EntityId, EntityKind, Header, Pose, Quaternion, Vec3};
 
-use crate::geometry::V3;
 use crate::params::{ParamError, SimParams};
 use crate::render::Frames;
 use crate::rng::Rng;
 use crate::script::{Plan, Planner, Support};
 use crate::truth::{TruthHeader, TRUTH_FORMAT_NAME, TRUTH_FORMAT_VERSION};
+use geometry::V3;
 
 /// A hand.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -325,7 +325,7 @@ fn layout(p: &SimParams, rng: &mut Rng) -> Result<Vec<(V3, f64)>, ParamError> {
 fn pick(rng: &mut Rng, candidates: &[usize], cubes: &[(V3, f64)], near: V3) -> usize {
     let weights: Vec<f64> = candidates
         .iter()
-        .map(|&c| (-(cubes[c].0 - near).horizontal() / 0.35).exp())
+        .map(|&c| (-(cubes[c].0 - near).horizontal_norm() / 0.35).exp())
         .collect();
     let total: f64 = weights.iter().sum();
     let mut x = rng.uniform(0.0, total);
@@ -510,7 +510,7 @@ pub fn session(params: &SimParams, seed: u64, frames: u64) -> Result<Demonstrati
             let others: Vec<V3> = planner
                 .bases()
                 .into_iter()
-                .filter(|b| (*b - planner.cube_pos(cube)).horizontal() > 1e-9)
+                .filter(|b| (*b - planner.cube_pos(cube)).horizontal_norm() > 1e-9)
                 .collect();
             for _ in 0..100 {
                 let x = rng.uniform(params.cube_area_x.min, params.cube_area_x.max);
@@ -518,7 +518,7 @@ pub fn session(params: &SimParams, seed: u64, frames: u64) -> Result<Demonstrati
                 let spot = V3::new(x, y, params.table_height + half);
                 if others
                     .iter()
-                    .all(|o| (*o - spot).horizontal() >= params.cube_spacing)
+                    .all(|o| (*o - spot).horizontal_norm() >= params.cube_spacing)
                 {
                     onto = Some(Support::Table { x, y });
                     break;

@@ -75,54 +75,7 @@ impl Phase {
     }
 }
 
-/// The paper's hand activities (Table 1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum Activity {
-    /// Moving, acting on an object, holding an object.
-    Stack,
-    /// Nothing acted on, nothing in hand (moving or not); also any tuple no rule matches.
-    Idle,
-    /// Moving, acting on an object, nothing in hand.
-    Reach,
-    /// Moving, nothing acted on, holding an object.
-    Put,
-    /// Not moving, nothing acted on, holding an object.
-    Take,
-}
-
-impl Activity {
-    /// Every activity, in the order of the paper's Table 1.
-    pub const ALL: [Activity; 5] = [
-        Activity::Stack,
-        Activity::Idle,
-        Activity::Reach,
-        Activity::Put,
-        Activity::Take,
-    ];
-
-    /// The paper's Table 1: (handMove, actedOn is an object, inHand is an object) to an
-    /// activity; a tuple that matches no row (not moving but acting on an object) is Idle.
-    pub fn classify(moving: bool, acted_on: bool, in_hand: bool) -> Activity {
-        match (moving, acted_on, in_hand) {
-            (true, true, true) => Activity::Stack,
-            (true, true, false) => Activity::Reach,
-            (true, false, true) => Activity::Put,
-            (false, false, true) => Activity::Take,
-            _ => Activity::Idle,
-        }
-    }
-
-    /// The name in files: `Stack`, `Idle`, `Reach`, `Put`, `Take`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Activity::Stack => "Stack",
-            Activity::Idle => "Idle",
-            Activity::Reach => "Reach",
-            Activity::Put => "Put",
-            Activity::Take => "Take",
-        }
-    }
-}
+pub use recording::Activity;
 
 /// One hand in one frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -324,22 +277,4 @@ pub fn read_truth<R: BufRead>(
         });
     }
     Ok((header, frames))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn table_one() {
-        assert_eq!(Activity::classify(true, true, true), Activity::Stack);
-        assert_eq!(Activity::classify(true, false, false), Activity::Idle);
-        assert_eq!(Activity::classify(false, false, false), Activity::Idle);
-        assert_eq!(Activity::classify(true, true, false), Activity::Reach);
-        assert_eq!(Activity::classify(true, false, true), Activity::Put);
-        assert_eq!(Activity::classify(false, false, true), Activity::Take);
-        // No row: not moving but acting on an object.
-        assert_eq!(Activity::classify(false, true, false), Activity::Idle);
-        assert_eq!(Activity::classify(false, true, true), Activity::Idle);
-    }
 }

@@ -94,12 +94,16 @@ impl FastDownward {
                 run.cost = parsed.cost;
                 run.peak_memory_kb = parsed.peak_memory_kb;
                 if run.outcome == Outcome::Solved {
-                    run.plan = plan
-                        .lines()
-                        .map(str::trim)
-                        .filter(|l| l.starts_with('('))
-                        .map(|l| l.trim_start_matches('(').trim_end_matches(')').to_string())
-                        .collect();
+                    match pddl::parse_plan(&plan) {
+                        Ok(read) => run.plan = read.steps,
+                        Err(e) => {
+                            run.outcome = Outcome::Error(format!("Fast Downward's sas_plan, {e}"))
+                        }
+                    }
+                    // Fast Downward's own verdict, from its cost line.
+                    if plan.contains("(unit cost)") {
+                        run.cost_kind = pddl::CostKind::Unit;
+                    }
                 }
             }
             Err(e) => run.outcome = Outcome::Error(e),

@@ -39,10 +39,12 @@ impl Outcome {
 pub struct PlanRun {
     /// How it ended.
     pub outcome: Outcome,
-    /// The plan: ground actions as plan lines say them without parentheses.
-    pub plan: Vec<String>,
+    /// The plan's steps.
+    pub plan: Vec<pddl::Step>,
     /// The plan's cost.
     pub cost: Option<u64>,
+    /// Whether every operator of the task costs 1 (`unit cost` in the plan file).
+    pub cost_kind: pddl::CostKind,
     /// States expanded.
     pub expansions: Option<u64>,
     /// Successor states generated.
@@ -85,6 +87,7 @@ impl PlanRun {
             outcome,
             plan: Vec::new(),
             cost: None,
+            cost_kind: pddl::CostKind::General,
             expansions: None,
             generated: None,
             translate_time: Duration::ZERO,
@@ -95,16 +98,12 @@ impl PlanRun {
         }
     }
 
-    /// The plan file's text: `(action args)` lines and the cost comment.
-    pub fn plan_text(&self) -> String {
-        let mut s = String::new();
-        for a in &self.plan {
-            s.push_str(&format!("({a})\n"));
-        }
-        if let Some(c) = self.cost {
-            s.push_str(&format!("; cost = {c} (general cost)\n"));
-        }
-        s
+    /// The plan file's text: `(action args)` lines and the cost line, `unit cost` if and
+    /// only if every operator of the task costs 1 ([`pddl::write_plan`]); `None` without
+    /// a plan.
+    pub fn plan_text(&self) -> Option<String> {
+        self.cost
+            .map(|cost| pddl::write_plan(&self.plan, cost, self.cost_kind))
     }
 }
 
@@ -170,12 +169,9 @@ pub fn plan_task(
         search::Outcome::MemoryLimit => Outcome::MemoryLimit,
     });
     if let search::Outcome::Solved(plan) = &result.outcome {
-        run.plan = plan
-            .operators
-            .iter()
-            .map(|op| task.operators[op.index()].name.clone())
-            .collect();
+        run.plan = translate::plan_steps(task, &plan.operators);
         run.cost = Some(plan.cost);
+        run.cost_kind = translate::cost_kind(task);
     }
     run.expansions = Some(result.statistics.expanded);
     run.generated = Some(result.statistics.generated);

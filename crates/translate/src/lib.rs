@@ -104,6 +104,26 @@ pub enum Translation {
     },
 }
 
+/// The plan steps of a sequence of a task's operators (a plan found by search): each
+/// operator's name, `action arg1 arg2` as the translator writes it (and as Fast
+/// Downward's `output.sas` names operators), as a [`pddl::Step`]. The one place plans of
+/// a finite-domain task become PDDL steps.
+pub fn plan_steps(task: &task::Task, operators: &[task::OpId]) -> Vec<pddl::Step> {
+    operators
+        .iter()
+        .map(|op| {
+            let name = &task.operators[op.index()].name;
+            pddl::Step::from_words(name).unwrap_or_else(|| pddl::Step::new(name.trim(), [""; 0]))
+        })
+        .collect()
+}
+
+/// Whether a task's plan files say `unit cost` or `general cost`: unit if and only if
+/// every operator costs 1 (as [`task::Task::cost`] counts it).
+pub fn cost_kind(task: &task::Task) -> pddl::CostKind {
+    pddl::CostKind::of_costs(task.operators.iter().map(|o| task.cost(o)))
+}
+
 /// Translates a checked domain and problem (see [`pddl::check_problem`]).
 pub fn translate(
     domain: &pddl::Domain,

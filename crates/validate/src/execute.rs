@@ -5,8 +5,8 @@ use std::fmt;
 
 use pddl::{Atom, CostExpr, Domain, Effect, FunctionTerm, InitEntry, Literal, Problem, Term, Type};
 
-use crate::plan::{Plan, Step};
 use crate::world::World;
+use pddl::{Plan, Step};
 
 /// A ground atom, `(on a b)`; also a ground function term, `(road-length a b)`.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -285,7 +285,7 @@ pub fn validate(domain: &Domain, problem: &Problem, plan: &Plan) -> Result<Repor
             verdict: Verdict::StepFailed(StepFailure {
                 step: number,
                 action: step.to_string(),
-                line: step.line,
+                line: plan.line(index),
                 reason,
             }),
             value,

@@ -4,6 +4,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
 use crate::*;
+use pddl::parse_plan;
 
 /// Trucks and cars (vehicles) drive between places; `depot` is a constant. Costs come from
 /// the static function `road-length`; `refresh` deletes and adds the same atom; `stay`

@@ -35,7 +35,7 @@ fn every_reference_plan_is_valid_at_its_optimal_cost_and_dropping_a_step_breaks_
             "{}",
             plan_file.display()
         );
-        let plan = validate::parse_plan(&text)
+        let plan = pddl::parse_plan(&text)
             .unwrap_or_else(|e| panic!("{}:{}: {}", plan_file.display(), e.line, e.kind));
         let report = validate::validate(&domain, &problem, &plan)
             .unwrap_or_else(|e| panic!("{}: {e}", plan_file.display()));

@@ -12,7 +12,7 @@ use crate::output::{write_atomically, write_atomically_with};
 pub fn run(args: ExecuteArgs) -> Result<ExitCode, Failure> {
     let task = input::read_task(&args.domain, &args.problem)?;
     let text = input::read_text(&args.plan)?;
-    let plan = validate::parse_plan(&text).map_err(|e| {
+    let plan = pddl::parse_plan(&text).map_err(|e| {
         Failure::plain(
             ExitCode::INPUT_ERROR,
             format!("{}:{}: {}", args.plan.display(), e.line, e.kind),

@@ -176,22 +176,12 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         }
     };
     if let Some(plan) = plan {
-        let unit_cost = task.operators.iter().all(|op| task.cost(op) == 1);
-        let mut text = String::new();
         for op in &plan.operators {
             let o = &task.operators[op.index()];
             println!("{} ({})", o.name, task.cost(o));
-            text.push_str(&format!("({})\n", o.name));
         }
-        text.push_str(&format!(
-            "; cost = {} ({})\n",
-            plan.cost,
-            if unit_cost {
-                "unit cost"
-            } else {
-                "general cost"
-            }
-        ));
+        let steps = translate::plan_steps(&task, &plan.operators);
+        let text = pddl::write_plan(&steps, plan.cost, translate::cost_kind(&task));
         output::write_atomically(&args.plan_file, &text)?;
         println!("Plan length: {} step(s).", plan.operators.len());
         println!("Plan cost: {}", plan.cost);

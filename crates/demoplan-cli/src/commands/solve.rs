@@ -84,7 +84,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         println!("No plan on any level: every level is unsolvable.");
         return Ok(ExitCode::UNSOLVABLE);
     };
-    write_atomically(&args.plan_file, &level.run.plan_text())?;
+    write_atomically(&args.plan_file, &level.run.plan_text().unwrap_or_default())?;
     println!(
         "Solution found at priority {} ({} operators): {} step(s), cost {}; plan written to {}",
         level.prio,

@@ -29,7 +29,7 @@ pub fn validate_plans(
     for (index, (path, text)) in plans.iter().zip(&texts).enumerate() {
         let blank = if index == 0 { "" } else { "\n" };
         let mut out = format!("{blank}Checking plan: {}\n", path.display());
-        let valid = match validate::parse_plan(text) {
+        let valid = match pddl::parse_plan(text) {
             Err(e) => {
                 out.push_str("Bad plan description!\n");
                 out.push_str(&format!("{}:{}: {}\n", path.display(), e.line, e.kind));

@@ -43,10 +43,6 @@ impl Measured {
     }
 }
 
-pub fn truth_activity(a: simulate::Activity) -> Activity {
-    Activity::from_name(a.name()).unwrap_or(Activity::Idle)
-}
-
 /// Renders, grounds and segments a demonstration.
 pub fn run(
     demo: &Demonstration,
@@ -79,10 +75,7 @@ pub fn measure(demo: &Demonstration, config: &GroundingConfig, tree: &ActivityTr
     let nh = truth.first().map_or(0, |t| t.hands.len());
     for h in 0..nh {
         let hand = truth[0].hands[h].hand;
-        let labels: Vec<Activity> = truth
-            .iter()
-            .map(|t| truth_activity(t.hands[h].activity))
-            .collect();
+        let labels: Vec<Activity> = truth.iter().map(|t| t.hands[h].activity).collect();
         let predicted = frame_activities(&segments, hand, &times);
         let (a, c) = agreement(&times, &predicted, &labels, IGNORE);
         m.agree += a;
@@ -109,7 +102,7 @@ pub fn labelled_frames(
     let mut take = |g: &grounding::GroundedFrame<'_>| {
         if let Some(t) = truth.get(g.index as usize) {
             for (h, th) in g.hands.iter().zip(&t.hands) {
-                out.push((*h, truth_activity(th.activity)));
+                out.push((*h, th.activity));
             }
         }
     };

@@ -1,20 +1,19 @@
-//! Plan files: one ground action per line, as Fast Downward writes them.
+//! Plans as text: one ground action per line, as Fast Downward writes them, and the
+//! plan-step type every crate that reads or writes plans shares.
 
 use std::fmt;
 
-/// One step of a plan: a ground action, lowercase, as `(name arg1 arg2)` wrote it.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+/// One step of a plan: a ground action, lowercase, as `(name arg1 arg2)` says it.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Step {
     /// The action's name.
     pub action: String,
     /// The objects it is applied to, in order.
     pub args: Vec<String>,
-    /// The 1-based line of the plan text it was read from (0 for a step built in code).
-    pub line: usize,
 }
 
 impl Step {
-    /// A step that was not read from a plan text.
+    /// A step from its action and arguments.
     pub fn new(
         action: impl Into<String>,
         args: impl IntoIterator<Item = impl Into<String>>,
@@ -22,8 +21,27 @@ impl Step {
         Step {
             action: action.into(),
             args: args.into_iter().map(Into::into).collect(),
-            line: 0,
         }
+    }
+
+    /// The step named by a ground action's name as a finite-domain task states it,
+    /// `name arg1 arg2` (Fast Downward's `output.sas` and the translator's operator
+    /// names): the words, without parentheses. `None` for a name without words.
+    pub fn from_words(name: &str) -> Option<Step> {
+        let mut words = name.split_whitespace();
+        let action = words.next()?;
+        Some(Step::new(action, words))
+    }
+
+    /// The step as a ground action's name: `name arg1 arg2`, the inverse of
+    /// [`Step::from_words`].
+    pub fn words(&self) -> String {
+        let mut s = self.action.clone();
+        for a in &self.args {
+            s.push(' ');
+            s.push_str(a);
+        }
+        s
     }
 }
 
@@ -38,14 +56,33 @@ impl fmt::Display for Step {
     }
 }
 
-/// A sequential plan: the steps in the order they are executed.
+/// A sequential plan: the steps in the order they are executed, and for a plan read
+/// from a text the line each step was read from.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Hash)]
 pub struct Plan {
     /// The steps.
     pub steps: Vec<Step>,
+    /// The 1-based line of each step in the text it was read from; empty for a plan
+    /// built in code.
+    pub lines: Vec<usize>,
 }
 
-/// Writes the plan as a plan file, one step per line.
+impl Plan {
+    /// A plan built in code (no lines).
+    pub fn new(steps: Vec<Step>) -> Plan {
+        Plan {
+            steps,
+            lines: Vec::new(),
+        }
+    }
+
+    /// The 1-based line step `index` was read from, 0 for a step built in code.
+    pub fn line(&self, index: usize) -> usize {
+        self.lines.get(index).copied().unwrap_or(0)
+    }
+}
+
+/// Writes the plan's steps, one per line (no cost line: see [`write_plan`]).
 impl fmt::Display for Plan {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for s in &self.steps {
@@ -53,6 +90,48 @@ impl fmt::Display for Plan {
         }
         Ok(())
     }
+}
+
+/// What the cost line of a plan file calls the cost, as Fast Downward does: `unit cost`
+/// when every operator of the task costs 1, `general cost` otherwise.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CostKind {
+    /// Every operator of the task costs 1 (so the cost is the plan's length).
+    Unit,
+    /// Some operator costs other than 1.
+    General,
+}
+
+impl CostKind {
+    /// The kind for a task whose operators cost `costs`: unit if and only if every one
+    /// costs 1 (a task without operators is unit cost).
+    pub fn of_costs(costs: impl IntoIterator<Item = u64>) -> CostKind {
+        if costs.into_iter().all(|c| c == 1) {
+            CostKind::Unit
+        } else {
+            CostKind::General
+        }
+    }
+
+    /// `unit cost` or `general cost`, as the plan file says it.
+    pub fn words(self) -> &'static str {
+        match self {
+            CostKind::Unit => "unit cost",
+            CostKind::General => "general cost",
+        }
+    }
+}
+
+/// A plan file as Fast Downward writes one: `(name arg1 arg2)` per step and the closing
+/// `; cost = N (unit cost)` or `(general cost)` line. The one writer of plan files.
+pub fn write_plan(steps: &[Step], cost: u64, kind: CostKind) -> String {
+    let mut s = String::new();
+    for step in steps {
+        s.push_str(&step.to_string());
+        s.push('\n');
+    }
+    s.push_str(&format!("; cost = {cost} ({})\n", kind.words()));
+    s
 }
 
 /// A line of a plan text that is not a ground action.
@@ -92,7 +171,7 @@ pub enum PlanErrorKind {
 ///
 /// Runs in time linear in the length of the text.
 pub fn parse_plan(text: &str) -> Result<Plan, PlanError> {
-    let mut steps = Vec::new();
+    let mut plan = Plan::default();
     for (index, raw) in text.lines().enumerate() {
         let line = index + 1;
         let content = raw.split(';').next().unwrap_or_default().trim();
@@ -100,9 +179,10 @@ pub fn parse_plan(text: &str) -> Result<Plan, PlanError> {
             continue;
         }
         let step = parse_step(content).map_err(|kind| PlanError { line, kind })?;
-        steps.push(Step { line, ..step });
+        plan.steps.push(step);
+        plan.lines.push(line);
     }
-    Ok(Plan { steps })
+    Ok(plan)
 }
 
 fn parse_step(content: &str) -> Result<Step, PlanErrorKind> {
@@ -130,7 +210,6 @@ fn parse_step(content: &str) -> Result<Step, PlanErrorKind> {
     Ok(Step {
         action,
         args: words.collect(),
-        line: 0,
     })
 }
 
@@ -152,16 +231,8 @@ mod tests {
         )
         .map_err(|e| e.to_string());
         let expected = Plan {
-            steps: vec![
-                Step {
-                    line: 3,
-                    ..Step::new("pick-up", ["b"])
-                },
-                Step {
-                    line: 4,
-                    ..Step::new("stack", ["b", "a"])
-                },
-            ],
+            steps: vec![Step::new("pick-up", ["b"]), Step::new("stack", ["b", "a"])],
+            lines: vec![3, 4],
         };
         assert_eq!(plan, Ok(expected));
     }
@@ -216,5 +287,37 @@ mod tests {
             error("(a b) junk ; comment").to_string(),
             "line 1: unexpected `junk` after the action: one action per line"
         );
+    }
+
+    #[test]
+    fn plan_files_say_unit_cost_only_when_every_operator_costs_one() {
+        let steps = [Step::new("pick-up", ["b"]), Step::new("stack", ["b", "a"])];
+        assert_eq!(CostKind::of_costs([1, 1, 1]), CostKind::Unit);
+        assert_eq!(CostKind::of_costs([]), CostKind::Unit);
+        assert_eq!(CostKind::of_costs([1, 0, 1]), CostKind::General);
+        assert_eq!(CostKind::of_costs([2]), CostKind::General);
+        assert_eq!(
+            write_plan(&steps, 2, CostKind::of_costs([1, 1])),
+            "(pick-up b)\n(stack b a)\n; cost = 2 (unit cost)\n"
+        );
+        assert_eq!(
+            write_plan(&steps, 7, CostKind::of_costs([1, 6])),
+            "(pick-up b)\n(stack b a)\n; cost = 7 (general cost)\n"
+        );
+        // What the writer writes reads back as the same steps.
+        let text = write_plan(&steps, 7, CostKind::General);
+        assert_eq!(parse_plan(&text).map(|p| p.steps), Ok(steps.to_vec()));
+    }
+
+    #[test]
+    fn operator_names_are_the_steps_words() {
+        let step = Step::new("stack", ["b", "a"]);
+        assert_eq!(step.words(), "stack b a");
+        assert_eq!(Step::from_words("stack  b a"), Some(step));
+        assert_eq!(
+            Step::from_words("noop"),
+            Some(Step::new("noop", [] as [&str; 0]))
+        );
+        assert_eq!(Step::from_words("  "), None);
     }
 }

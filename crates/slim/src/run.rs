@@ -134,6 +134,10 @@ pub fn translate_checked(domain: &pddl::Domain, problem: &pddl::Problem) -> Tran
     match translate::translate(domain, problem) {
         Ok(translate::Translation::Task(t)) => Translated::Task(Box::new(t.task), start.elapsed()),
         Ok(translate::Translation::Unsolvable { .. }) => done(Outcome::RelaxedUnreachable),
+        Ok(translate::Translation::Stopped { limit, .. }) => done(match limit {
+            task::Limit::Time => Outcome::TimeLimit,
+            task::Limit::Memory => Outcome::MemoryLimit,
+        }),
         Err(e) => done(Outcome::Error(e.to_string())),
     }
 }

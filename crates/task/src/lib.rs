@@ -26,8 +26,11 @@
 //! # Ok::<(), task::TaskError>(())
 //! ```
 
+pub mod limits;
 pub mod mersenne_twister;
 pub mod sas_file;
+
+pub use limits::{deadline_after, Limit, Limits};
 
 use std::fmt;
 

@@ -100,7 +100,6 @@ struct Reach<'m, 'w> {
     /// Join order of the other positive preconditions, per (schema, trigger index).
     orders: FxHashMap<(usize, usize), Vec<usize>>,
     seen: FxHashSet<(u32, Box<[u32]>)>,
-    found: Vec<(u32, Box<[u32]>)>,
     /// Atoms with id <= current have been taken from the queue.
     current: AtomId,
 }
@@ -165,7 +164,6 @@ impl<'m, 'w> Reach<'m, 'w> {
             triggers,
             orders,
             seen: FxHashSet::default(),
-            found: Vec::new(),
             current: 0,
         }
     }
@@ -180,9 +178,7 @@ impl<'m, 'w> Reach<'m, 'w> {
             if s.positive.is_empty() {
                 let mut binding = vec![UNBOUND; s.domains.len()];
                 self.complete(s, 0, &mut binding, &mut bindings);
-                for b in bindings.drain(..) {
-                    self.emit(si, b);
-                }
+                self.emit_all(si, &mut bindings);
             }
         }
         let mut atom = 0;
@@ -206,9 +202,7 @@ impl<'m, 'w> Reach<'m, 'w> {
                 if self.unify(s, &s.positive[i], atom, &mut binding, &mut Vec::new()) {
                     let order = self.orders.get(&(si, i)).cloned().unwrap_or_default();
                     self.join(s, &order, 0, &mut binding, &mut bindings);
-                    for b in bindings.drain(..) {
-                        self.emit(si, b);
-                    }
+                    self.emit_all(si, &mut bindings);
                 }
             }
             self.triggers[pred.0 as usize] = triggers;
@@ -346,16 +340,31 @@ impl<'m, 'w> Reach<'m, 'w> {
             })
     }
 
+    /// Records the bindings found for `schema`, unless a limit stopped the grounding:
+    /// then what is left is thrown away at once (recording it could take as long again).
+    fn emit_all(&mut self, schema: usize, bindings: &mut Vec<Box<[u32]>>) {
+        if self.watch.stopped().is_some() {
+            *bindings = Vec::new();
+            return;
+        }
+        for b in bindings.drain(..) {
+            self.emit(schema, b);
+        }
+    }
+
+    /// Records a reachable binding once. The set of bindings is the only copy (one
+    /// allocation per ground action: a blow-up stopped at a limit frees them quickly).
     fn emit(&mut self, schema: usize, binding: Box<[u32]>) {
-        if !self.seen.insert((schema as u32, binding.clone())) {
+        let found = (schema as u32, binding);
+        if self.seen.contains(&found) {
             return;
         }
         let s = &self.model.schemas[schema];
         for p in &s.add {
-            let key = AtomTable::key(p.pred, p.args.iter().map(|a| value(*a, &binding)));
+            let key = AtomTable::key(p.pred, p.args.iter().map(|a| value(*a, &found.1)));
             self.atoms.intern(key);
         }
-        self.found.push((schema as u32, binding));
+        self.seen.insert(found);
     }
 }
 
@@ -366,10 +375,9 @@ pub(crate) fn ground(model: &Model, watch: &Watch) -> Result<Option<Grounding>, 
     if watch.check() {
         return Ok(None);
     }
-    let Reach {
-        atoms, mut found, ..
-    } = reach;
+    let Reach { atoms, seen, .. } = reach;
     // Deterministic order: by schema, then by arguments.
+    let mut found: Vec<(u32, Box<[u32]>)> = seen.into_iter().collect();
     found.sort_unstable();
     let fluent: Vec<bool> = (0..atoms.len() as AtomId)
         .map(|a| model.predicates[atoms.pred(a).0 as usize].fluent)

@@ -58,18 +58,11 @@ impl LimitCheck {
     }
 }
 
-/// When to give up. The default has no limits.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct SearchLimits {
-    /// Stop with [`Outcome::TimeLimit`] once this instant has passed.
-    pub deadline: Option<Instant>,
-    /// Stop with [`Outcome::MemoryLimit`] once memory use exceeds this many bytes.
-    pub memory_limit_bytes: Option<u64>,
-    /// The process's memory use in bytes (e.g. a counting allocator's reading). Without
-    /// it the search counts the bytes of its own main structures (states, per-state
-    /// information, open list), which leaves out the task and the heuristic.
-    pub memory_usage: Option<fn() -> u64>,
-}
+/// When to give up: the run's limits ([`task::Limits`], shared with translation), under
+/// the name the search's API has always used. The default has no limits. Without a
+/// `memory_usage` probe the search counts the bytes of its own main structures (states,
+/// per-state information, open list), which leaves out the task and the heuristic.
+pub type SearchLimits = task::Limits;
 
 /// Counters reported when the search enters a new, higher f-layer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -122,6 +115,16 @@ pub enum Outcome {
     TimeLimit,
     /// The memory limit was exceeded, or the number of states outgrew 32-bit ids.
     MemoryLimit,
+}
+
+impl Outcome {
+    /// The outcome of a run that reached `limit`.
+    pub fn limit(limit: task::Limit) -> Outcome {
+        match limit {
+            task::Limit::Time => Outcome::TimeLimit,
+            task::Limit::Memory => Outcome::MemoryLimit,
+        }
+    }
 }
 
 /// The outcome of a search and what it counted on the way.
@@ -521,19 +524,7 @@ fn limit_reached(
 
 /// The outcome the limits call for, if any.
 fn check_limits(limits: &SearchLimits, own_bytes: impl FnOnce() -> usize) -> Option<Outcome> {
-    if limits.deadline.is_some_and(|d| Instant::now() >= d) {
-        return Some(Outcome::TimeLimit);
-    }
-    if let Some(limit) = limits.memory_limit_bytes {
-        let used = match limits.memory_usage {
-            Some(read) => read(),
-            None => own_bytes() as u64,
-        };
-        if used > limit {
-            return Some(Outcome::MemoryLimit);
-        }
-    }
-    None
+    limits.reached(|| own_bytes() as u64).map(Outcome::limit)
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@
 use std::fmt;
 use std::time::Duration;
 
-use task::Task;
+use task::{Limit, Task};
 
 use crate::astar::{SearchError, SearchLimits};
 use crate::cpdbs::{systematic_patterns, CanonicalPdbs};
@@ -17,7 +17,7 @@ use crate::heuristic::{Blind, Heuristic};
 use crate::hmax::HMax;
 use crate::ipdb::{hill_climbing, ipdb, IpdbConfig};
 use crate::lmcut::LmCut;
-use crate::pdb::build_collection;
+use crate::pdb::build_collection_within;
 
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
@@ -107,29 +107,33 @@ impl HeuristicConfig {
         }
     }
 
-    /// The heuristic for `task`; fails if the task is invalid or a pattern does not fit
-    /// it.
-    pub fn build(&self, task: &Task) -> Result<Box<dyn Heuristic>, SearchError> {
-        self.build_with_limits(task, &SearchLimits::default())
-    }
-
-    /// Like [`build`](Self::build), but a pattern-collection generator that can stop
-    /// early (the hill climbing of `ipdb`) stops at `limits.deadline` or once memory use
-    /// exceeds `limits.memory_limit_bytes`, keeping what it has: the search then reports
-    /// the limit itself.
+    /// The heuristic for `task` under `limits`; fails if the task is invalid or a pattern
+    /// does not fit it.
+    ///
+    /// The limits hold during construction: `pdb()` and `cpdbs()` with a collection the
+    /// user fixed (manual or systematic patterns) give [`Built::Stopped`] with
+    /// [`Limit::Memory`] before any database is allocated when building them would take
+    /// memory use beyond `limits.memory_limit_bytes` (by [`crate::construction_bytes`]),
+    /// and with [`Limit::Time`] when the deadline passes between databases. The hill
+    /// climbing of `ipdb()` and `cpdbs(hillclimbing())` stops at the limits instead,
+    /// rejecting a candidate whose database does not fit, and keeps the collection found
+    /// so far; the clique enumeration and dominance pruning after it stop at the
+    /// deadline, keeping the cliques found (any set of additive cliques is admissible).
+    /// Then the search reports a limit that has passed at its first check.
     pub fn build_with_limits(
         &self,
         task: &Task,
         limits: &SearchLimits,
-    ) -> Result<Box<dyn Heuristic>, SearchError> {
-        Ok(match self {
+    ) -> Result<Built, SearchError> {
+        let fixed = |patterns: &[Vec<u32>]| build_collection_within(task, patterns, limits);
+        Ok(Built::Heuristic(match self {
             HeuristicConfig::Blind => Box::new(Blind::new(task)),
             HeuristicConfig::HMax => Box::new(HMax::new(task)?),
             HeuristicConfig::LmCut => Box::new(LmCut::new(task)?),
-            HeuristicConfig::Pdb { pattern } => {
-                let pdbs = build_collection(task, std::slice::from_ref(pattern))?;
-                Box::new(CanonicalPdbs::new(task, pdbs, None, "pdb"))
-            }
+            HeuristicConfig::Pdb { pattern } => match fixed(std::slice::from_ref(pattern))? {
+                Ok(pdbs) => Box::new(CanonicalPdbs::new(task, pdbs, None, "pdb")),
+                Err(limit) => return Ok(Built::Stopped(limit)),
+            },
             HeuristicConfig::Ipdb(config) => Box::new(ipdb(task, config, limits)?),
             HeuristicConfig::Cpdbs {
                 patterns,
@@ -139,30 +143,61 @@ impl HeuristicConfig {
                 let pruning = match max_time_dominance_pruning {
                     Some(t) if t.is_zero() => None,
                     Some(t) => Some(*t),
-                    None => Some(Duration::MAX / 4),
+                    None => Some(Duration::MAX),
                 };
-                let (pdbs, climb) = match patterns {
+                let collection = match patterns {
                     PatternCollectionConfig::Manual(patterns) => {
-                        (build_collection(task, patterns)?, None)
+                        fixed(patterns)?.map(|p| (p, None))
                     }
                     PatternCollectionConfig::Systematic(size) => {
                         task.validate()?;
-                        let patterns = systematic_patterns(task, *size as usize);
-                        (build_collection(task, &patterns)?, None)
+                        fixed(&systematic_patterns(task, *size as usize))?.map(|p| (p, None))
                     }
                     PatternCollectionConfig::HillClimbing(config) => {
                         task.validate()?;
                         let (pdbs, climb) = hill_climbing(task, config, limits);
-                        (pdbs, Some(climb))
+                        Ok((pdbs, Some(climb)))
                     }
                 };
-                let mut h = CanonicalPdbs::new(task, pdbs, pruning, "cpdbs");
+                let (pdbs, climb) = match collection {
+                    Ok(built) => built,
+                    Err(limit) => return Ok(Built::Stopped(limit)),
+                };
+                let mut h = CanonicalPdbs::within(task, pdbs, pruning, "cpdbs", limits.deadline);
                 let statistics = h.statistics_mut();
                 statistics.hill_climbing = climb;
                 statistics.total_time = start.elapsed();
                 Box::new(h)
             }
-        })
+        }))
+    }
+}
+
+/// A heuristic built under limits ([`HeuristicConfig::build_with_limits`]), or the limit
+/// that stopped its construction before it was complete.
+pub enum Built {
+    /// The heuristic, ready for the search.
+    Heuristic(Box<dyn Heuristic>),
+    /// Construction stopped at this limit; nothing is left to search with.
+    Stopped(Limit),
+}
+
+impl Built {
+    /// The heuristic, or `None` if construction stopped at a limit.
+    pub fn into_heuristic(self) -> Option<Box<dyn Heuristic>> {
+        match self {
+            Built::Heuristic(h) => Some(h),
+            Built::Stopped(_) => None,
+        }
+    }
+}
+
+impl fmt::Debug for Built {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Built::Heuristic(h) => write!(f, "Heuristic({})", h.name()),
+            Built::Stopped(limit) => write!(f, "Stopped({limit:?})"),
+        }
     }
 }
 
@@ -624,7 +659,12 @@ fn integer(function: &str, value: &Value, infinity: bool) -> Result<u64, ConfigE
         .parse::<u64>()
         .ok()
         .and_then(|n| n.checked_mul(factor))
-        .ok_or_else(error)
+        .ok_or_else(|| {
+            invalid(
+                function,
+                &format!("`{w}` is too large (at most {})", u64::MAX),
+            )
+        })
 }
 
 fn positive(function: &str, param: &str, n: u64) -> Result<u64, ConfigError> {
@@ -634,7 +674,8 @@ fn positive(function: &str, param: &str, n: u64) -> Result<u64, ConfigError> {
     Ok(n)
 }
 
-/// Seconds (`30`, `1.5`) or `infinity` (`None`).
+/// Seconds (`30`, `1.5`, `1e3`) or `infinity` (`None`). A number of seconds too large
+/// for a `Duration` (over about 5.8e11 years) is no limit, as `infinity` is.
 fn seconds(function: &str, value: &Value) -> Result<Option<Duration>, ConfigError> {
     let w = word(value).ok_or_else(|| invalid(function, "expected a number of seconds"))?;
     if w == "infinity" {
@@ -643,8 +684,7 @@ fn seconds(function: &str, value: &Value) -> Result<Option<Duration>, ConfigErro
     w.parse::<f64>()
         .ok()
         .filter(|t| t.is_finite() && *t >= 0.0 && !w.starts_with(['+', '-']))
-        .and_then(|t| Duration::try_from_secs_f64(t).ok())
-        .map(Some)
+        .map(|t| Duration::try_from_secs_f64(t).ok())
         .ok_or_else(|| invalid(function, &format!("`{w}` is not a number of seconds")))
 }
 
@@ -1056,6 +1096,19 @@ mod tests {
             "`pdb`: a variable index is too large"
         );
         assert_eq!(
+            err("astar(ipdb(pdb_max_size=99999999999999999999))"),
+            "`ipdb`: `99999999999999999999` is too large (at most 18446744073709551615)"
+        );
+        assert_eq!(
+            err("astar(ipdb(pdb_max_size=20000000000G))"),
+            "`ipdb`: `20000000000G` is too large (at most 18446744073709551615)"
+        );
+        assert_eq!(
+            ok("astar(ipdb(max_time=1e300))"),
+            ok("astar(ipdb(max_time=infinity))"),
+            "beyond a Duration: no limit"
+        );
+        assert_eq!(
             err("astar(ipdb(max_time=-1))"),
             "`ipdb`: `-1` is not a number of seconds"
         );
@@ -1262,7 +1315,11 @@ mod tests {
         ];
         for config in configs {
             let config = ok(&format!("astar({config})")).heuristic;
-            let mut h = config.build(&task).unwrap();
+            let mut h = config
+                .build_with_limits(&task, &SearchLimits::default())
+                .unwrap()
+                .into_heuristic()
+                .unwrap();
             assert_eq!(h.name(), config.name());
             assert_eq!(h.evaluate(&[0]), Some(0));
             assert_eq!(
@@ -1277,13 +1334,15 @@ mod tests {
         }
         let climbs = ok("astar(cpdbs(hillclimbing()))")
             .heuristic
-            .build(&task)
+            .build_with_limits(&task, &SearchLimits::default())
+            .unwrap()
+            .into_heuristic()
             .unwrap();
         assert!(climbs.pdb_statistics().unwrap().hill_climbing.is_some());
         // A pattern that does not fit the task.
         let e = ok("astar(pdb([0, 3]))")
             .heuristic
-            .build(&task)
+            .build_with_limits(&task, &SearchLimits::default())
             .err()
             .unwrap();
         assert_eq!(
@@ -1292,9 +1351,79 @@ mod tests {
         );
         let e = ok("astar(cpdbs([[0], [1]]))")
             .heuristic
-            .build(&task)
+            .build_with_limits(&task, &SearchLimits::default())
             .err()
             .unwrap();
         assert!(matches!(e, SearchError::InvalidPattern(_)));
+    }
+
+    /// A task of `n` binary variables, each set by one operator, the goal all set.
+    fn binary_task(n: u32) -> Task {
+        use task::{Fact, Operator, VarId, Variable};
+        Task {
+            variables: (0..n).map(|v| Variable::binary(&format!("v{v}"))).collect(),
+            mutexes: vec![],
+            initial_state: vec![0; n as usize],
+            goal: (0..n).map(|v| Fact::new(VarId(v), 1)).collect(),
+            operators: (0..n)
+                .map(|v| Operator {
+                    name: format!("set-v{v}"),
+                    preconditions: vec![Fact::new(VarId(v), 0)],
+                    effects: vec![Fact::new(VarId(v), 1)],
+                    cost: 1,
+                })
+                .collect(),
+            use_costs: false,
+        }
+    }
+
+    #[test]
+    fn fixed_collections_that_do_not_fit_the_memory_limit_are_never_built() {
+        let task = binary_task(40);
+        let limits = SearchLimits {
+            memory_limit_bytes: Some(200 << 20),
+            ..SearchLimits::default()
+        };
+        let pattern: Vec<String> = (0..30).map(|v| v.to_string()).collect();
+        let big = pattern.join(", ");
+        for s in [
+            format!("astar(pdb([{big}]))"),
+            format!("astar(cpdbs([[0], [{big}]]))"),
+        ] {
+            // 2^30 states: 20 GiB by the estimate; allocating them would take seconds.
+            let built = ok(&s).heuristic.build_with_limits(&task, &limits).unwrap();
+            assert!(
+                matches!(built, Built::Stopped(Limit::Memory)),
+                "{s}: {built:?}"
+            );
+            let result = crate::search(&task, &ok(&s), &limits, None).unwrap();
+            assert_eq!(result.outcome, crate::Outcome::MemoryLimit, "{s}");
+        }
+        // What fits is built: 2^10 states.
+        let small = ok("astar(pdb([0, 1, 2, 3, 4, 5, 6, 7, 8, 9]))");
+        let built = small.heuristic.build_with_limits(&task, &limits).unwrap();
+        assert!(matches!(built, Built::Heuristic(_)), "{built:?}");
+        // A deadline already past stops a fixed collection before its first database.
+        let past = SearchLimits {
+            deadline: Some(std::time::Instant::now()),
+            ..SearchLimits::default()
+        };
+        let built = small.heuristic.build_with_limits(&task, &past).unwrap();
+        assert!(matches!(built, Built::Stopped(Limit::Time)), "{built:?}");
+    }
+
+    #[test]
+    fn huge_numbers_of_seconds_are_no_limit_and_never_panic() {
+        let task = binary_task(3);
+        for s in [
+            "astar(ipdb(max_time=1e300))",
+            "astar(ipdb(max_time_dominance_pruning=1e19))",
+            "astar(cpdbs(systematic(2), max_time_dominance_pruning=1e300))",
+            "astar(cpdbs(hillclimbing(max_time=18446744073709551615)))",
+        ] {
+            let config = ok(s);
+            let result = crate::search(&task, &config, &SearchLimits::default(), None).unwrap();
+            assert!(matches!(result.outcome, crate::Outcome::Solved(_)), "{s}");
+        }
     }
 }

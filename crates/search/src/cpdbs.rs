@@ -66,8 +66,13 @@ impl Additivity {
 /// The maximal cliques of the graph on `0..n` whose adjacency rows are the bit sets
 /// `adjacent[v]` (`n` bits each, symmetric, no loops), each sorted, in a deterministic
 /// order. Bron–Kerbosch with Tomita's pivot: O(3^(n/3)) in the worst case, fast on the
-/// sparse or nearly complete graphs pattern collections give.
-pub(crate) fn maximal_cliques(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> {
+/// sparse or nearly complete graphs pattern collections give. Stops at `deadline`,
+/// keeping the cliques found so far (each maximal).
+pub(crate) fn maximal_cliques(
+    n: usize,
+    adjacent: &[Vec<u64>],
+    deadline: Option<Instant>,
+) -> Vec<Vec<u32>> {
     let words = n.div_ceil(64);
     let mut candidates = vec![0u64; words];
     for v in 0..n {
@@ -75,14 +80,30 @@ pub(crate) fn maximal_cliques(n: usize, adjacent: &[Vec<u64>]) -> Vec<Vec<u32>> 
     }
     let mut out = Vec::new();
     let mut clique = Vec::new();
+    let mut clock = Clock { deadline, calls: 0 };
     expand(
         adjacent,
         &mut clique,
         candidates,
         vec![0u64; words],
         &mut out,
+        &mut clock,
     );
     out
+}
+
+/// The deadline of a clique enumeration, read every 256 calls (a call is cheap; reading
+/// the clock on each would be a large part of it).
+struct Clock {
+    deadline: Option<Instant>,
+    calls: u32,
+}
+
+impl Clock {
+    fn passed(&mut self) -> bool {
+        self.calls = self.calls.wrapping_add(1);
+        self.calls % 256 == 0 && self.deadline.is_some_and(|d| Instant::now() >= d)
+    }
 }
 
 fn bits(set: &[u64]) -> impl Iterator<Item = usize> + '_ {
@@ -104,21 +125,26 @@ fn count_common(a: &[u64], b: &[u64]) -> u32 {
 }
 
 /// One level of Bron–Kerbosch: `clique` is R, `candidates` P, `excluded` X. The depth
-/// is at most the size of a clique.
+/// is at most the size of a clique. Returns false once the clock's deadline has passed,
+/// so that every level returns at once.
 fn expand(
     adjacent: &[Vec<u64>],
     clique: &mut Vec<u32>,
     mut candidates: Vec<u64>,
     mut excluded: Vec<u64>,
     out: &mut Vec<Vec<u32>>,
-) {
+    clock: &mut Clock,
+) -> bool {
+    if clock.passed() {
+        return false;
+    }
     if candidates.iter().all(|&w| w == 0) {
         if excluded.iter().all(|&w| w == 0) {
             let mut c = clique.clone();
             c.sort_unstable();
             out.push(c);
         }
-        return;
+        return true;
     }
     // Pivot: the vertex of P or X with the most neighbours in P.
     let pivot = bits(&candidates)
@@ -138,16 +164,24 @@ fn expand(
         let p: Vec<u64> = candidates.iter().zip(row).map(|(a, b)| a & b).collect();
         let x: Vec<u64> = excluded.iter().zip(row).map(|(a, b)| a & b).collect();
         clique.push(v as u32);
-        expand(adjacent, clique, p, x, out);
+        let go_on = expand(adjacent, clique, p, x, out, clock);
         clique.pop();
+        if !go_on {
+            return false;
+        }
         candidates[v / 64] &= !(1 << (v % 64));
         excluded[v / 64] |= 1 << (v % 64);
     }
+    true
 }
 
 /// The maximal additive subsets of `patterns`: the maximal cliques of their
-/// compatibility graph.
-pub(crate) fn additive_cliques(additivity: &Additivity, patterns: &[&[VarId]]) -> Vec<Vec<u32>> {
+/// compatibility graph, as far as they are found by `deadline`.
+pub(crate) fn additive_cliques(
+    additivity: &Additivity,
+    patterns: &[&[VarId]],
+    deadline: Option<Instant>,
+) -> Vec<Vec<u32>> {
     let n = patterns.len();
     let words = n.div_ceil(64);
     let mut adjacent = vec![vec![0u64; words]; n];
@@ -159,7 +193,7 @@ pub(crate) fn additive_cliques(additivity: &Additivity, patterns: &[&[VarId]]) -
             }
         }
     }
-    maximal_cliques(n, &adjacent)
+    maximal_cliques(n, &adjacent, deadline)
 }
 
 /// The *interesting* patterns (Pommerening, Röger and Helmert, IJCAI 2013) of at most
@@ -322,20 +356,38 @@ impl CanonicalPdbs {
     /// `dominance_pruning` is given (its time limit; the pruning stops when it passes).
     pub fn new(
         task: &Task,
+        pdbs: Vec<PatternDatabase>,
+        dominance_pruning: Option<Duration>,
+        name: &'static str,
+    ) -> CanonicalPdbs {
+        CanonicalPdbs::within(task, pdbs, dominance_pruning, name, None)
+    }
+
+    /// Like [`new`](Self::new), but the clique enumeration and the pruning stop at
+    /// `deadline` (the run's, `--overall-time-limit`), keeping the cliques found so far:
+    /// any set of additive cliques gives an admissible heuristic, only a weaker one, and
+    /// a run whose deadline passed stops at the search's first check anyway.
+    pub fn within(
+        task: &Task,
         mut pdbs: Vec<PatternDatabase>,
         dominance_pruning: Option<Duration>,
         name: &'static str,
+        deadline: Option<Instant>,
     ) -> CanonicalPdbs {
         let start = Instant::now();
         let mut seen = rustc_hash::FxHashSet::default();
         pdbs.retain(|p| seen.insert(p.pattern().to_vec()));
         let additivity = Additivity::new(task);
         let patterns: Vec<&[VarId]> = pdbs.iter().map(|p| p.pattern()).collect();
-        let mut cliques = additive_cliques(&additivity, &patterns);
+        let mut cliques = additive_cliques(&additivity, &patterns, deadline);
         let mut statistics = PdbStatistics::default();
         if let Some(limit) = dominance_pruning {
             let before = cliques.len();
-            cliques = prune_dominated(&patterns, cliques, start + limit);
+            let until = match (start.checked_add(limit), deadline) {
+                (Some(a), Some(b)) => Some(a.min(b)),
+                (a, b) => a.or(b),
+            };
+            cliques = prune_dominated(&patterns, cliques, until);
             statistics.pruned_cliques = before - cliques.len();
             statistics.dominance_pruning_time = start.elapsed();
             // Drop the databases no clique uses, renumbering the cliques' members.
@@ -454,7 +506,7 @@ impl Heuristic for CanonicalPdbs {
 fn prune_dominated(
     patterns: &[&[VarId]],
     cliques: Vec<Vec<u32>>,
-    deadline: Instant,
+    deadline: Option<Instant>,
 ) -> Vec<Vec<u32>> {
     let n = patterns.len();
     let words = n.div_ceil(64).max(1);
@@ -511,7 +563,7 @@ fn prune_dominated(
         if pruned[b] {
             continue;
         }
-        if b % 256 == 0 && Instant::now() >= deadline {
+        if b % 256 == 0 && deadline.is_some_and(|d| Instant::now() >= d) {
             break;
         }
         closure.fill(0);
@@ -593,20 +645,36 @@ mod tests {
                 }
             }
             let adjacent = graph(n, &edges);
-            let mut got = maximal_cliques(n, &adjacent);
+            let mut got = maximal_cliques(n, &adjacent, None);
             got.sort();
             assert_eq!(got, brute_force(n, &adjacent), "{n} {edges:?}");
         }
         // No vertices: one empty clique (the heuristic is then 0).
-        assert_eq!(maximal_cliques(0, &[]), vec![Vec::<u32>::new()]);
+        assert_eq!(maximal_cliques(0, &[], None), vec![Vec::<u32>::new()]);
         // A 70-vertex complete graph crosses a word boundary.
         let edges: Vec<_> = (0..70)
             .flat_map(|a| (a + 1..70).map(move |b| (a, b)))
             .collect();
         assert_eq!(
-            maximal_cliques(70, &graph(70, &edges)),
+            maximal_cliques(70, &graph(70, &edges), None),
             vec![(0..70).collect::<Vec<u32>>()]
         );
+    }
+
+    #[test]
+    fn clique_enumeration_stops_at_the_deadline_with_maximal_cliques() {
+        // Every pair but (2k, 2k + 1) is an edge: 2^12 maximal cliques (one of each pair).
+        let n = 24;
+        let edges: Vec<_> = (0..n)
+            .flat_map(|a| (a + 1..n).map(move |b| (a, b)))
+            .filter(|&(a, b)| !(a % 2 == 0 && b == a + 1))
+            .collect();
+        let adjacent = graph(n, &edges);
+        let all = maximal_cliques(n, &adjacent, None);
+        assert_eq!(all.len(), 1 << 12);
+        let cut = maximal_cliques(n, &adjacent, Some(Instant::now()));
+        assert!(cut.len() < all.len(), "stopped early: {}", cut.len());
+        assert!(cut.iter().all(|c| all.contains(c)), "only maximal cliques");
     }
 
     /// Variables a, b, c, d, e; goal a, b, c. `ab` changes a and b, `c-from-d` changes c
@@ -685,7 +753,7 @@ mod tests {
         let refs: Vec<&[VarId]> = patterns.iter().map(|p| p.as_slice()).collect();
         // {0}, {1} additive with each other and {2}; {0, 1} additive with {2}.
         let cliques = vec![vec![0, 1, 3], vec![2, 3]];
-        let far = Instant::now() + Duration::from_secs(60);
+        let far = Some(Instant::now() + Duration::from_secs(60));
         assert_eq!(
             prune_dominated(&refs, cliques.clone(), far),
             vec![vec![2, 3]]

@@ -40,7 +40,11 @@
 //! abstract states are rejected (when generated, without building their database, or
 //! when next evaluated). The climb also ends when the initial
 //! state is a dead end, at `max_time`, at the caller's deadline or memory limit, or once
-//! `max_generated_patterns` candidates were generated.
+//! `max_generated_patterns` candidates were generated. Under a memory limit a candidate
+//! whose database would take memory use beyond it ([`crate::construction_bytes`]) is
+//! rejected before its database is allocated, and the climb ends there: the search then
+//! runs with the collection found so far, in the memory left. The clique enumeration
+//! and the dominance pruning after the climb stop at the caller's deadline.
 //!
 //! Without `max_time` (unlimited, Fast Downward's default) but with a caller's deadline
 //! (`demoplan plan --overall-time-limit`), the climb takes at most half the time left
@@ -70,7 +74,9 @@ use crate::astar::SearchLimits;
 use crate::cpdbs::{additive_cliques, Additivity, CanonicalPdbs};
 use crate::fd_random::FdRandom;
 pub use crate::fd_random::DEFAULT_SEED;
-use crate::pdb::{pattern_size, PatternDatabase, PatternError, PdbBuilder, MAX_PDB_SIZE};
+use crate::pdb::{
+    construction_bytes, pattern_size, PatternDatabase, PatternError, PdbBuilder, MAX_PDB_SIZE,
+};
 use crate::successor::SuccessorGenerator;
 
 const DEAD: u32 = u32::MAX;
@@ -191,9 +197,9 @@ pub fn ipdb(
     let pruning = match config.max_time_dominance_pruning {
         Some(t) if t.is_zero() => None,
         Some(t) => Some(t),
-        None => Some(Duration::MAX / 4),
+        None => Some(Duration::MAX),
     };
-    let mut heuristic = CanonicalPdbs::new(task, collection, pruning, "ipdb");
+    let mut heuristic = CanonicalPdbs::within(task, collection, pruning, "ipdb", limits.deadline);
     let statistics = heuristic.statistics_mut();
     statistics.hill_climbing = Some(climb);
     statistics.total_time = start.elapsed();
@@ -401,7 +407,7 @@ impl<'t> Climb<'t> {
         self.collection_size += pdb.size() as u64;
         self.collection.push(pdb);
         let patterns: Vec<&[VarId]> = self.collection.iter().map(|p| p.pattern()).collect();
-        self.cliques = additive_cliques(&self.additivity, &patterns);
+        self.cliques = additive_cliques(&self.additivity, &patterns, self.deadline);
     }
 
     /// The time or memory limit that has been reached, if any.
@@ -464,6 +470,15 @@ impl<'t> Climb<'t> {
                 self.generated.insert(candidate);
                 self.stats.dropped_patterns += 1;
                 continue;
+            }
+            if self
+                .limits
+                .would_exceed(construction_bytes([size]), || self.table_bytes)
+            {
+                // Its database does not fit the memory limit: rejected unbuilt, and the
+                // climb ends, so that the search runs with the collection found so far.
+                self.stats.dropped_patterns += 1;
+                return Some(ClimbEnd::MemoryLimit);
             }
             let pdb = self.build(&candidate);
             self.generated.insert(candidate);
@@ -1326,6 +1341,23 @@ mod tests {
         let patterns: Vec<&[VarId]> = h.pdbs().iter().map(|p| p.pattern()).collect();
         assert_eq!(patterns, [&[VarId(0), VarId(1)][..]]);
         assert_eq!((s.patterns, s.pruned_patterns, s.pruned_cliques), (1, 1, 1));
+
+        // Under a memory limit that {a}'s table (14 bytes) fits but building {a, b}
+        // (4 states: 80 bytes by `construction_bytes`) does not, the candidate is
+        // rejected unbuilt, the climb ends, and the heuristic is {a}'s.
+        assert_eq!(construction_bytes([4]), 80);
+        let fitting = SearchLimits {
+            memory_limit_bytes: Some(50),
+            ..SearchLimits::default()
+        };
+        let mut h = ipdb(&task, &config, &fitting).unwrap();
+        assert_eq!(h.evaluate(&[0, 0, 0]), Some(1));
+        let climb = h.statistics().hill_climbing.clone().unwrap();
+        assert_eq!(
+            (climb.end, climb.patterns, climb.dropped_patterns),
+            (ClimbEnd::MemoryLimit, 1, 1)
+        );
+        assert_eq!(climb.total_size, 2, "no candidate was built");
 
         // Without room for {a, b}, the candidate is rejected.
         let config = IpdbConfig {

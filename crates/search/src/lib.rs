@@ -80,7 +80,7 @@ mod random_tasks;
 
 pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
 pub use config::{
-    alias, parse_search, ConfigError, Engine, HeuristicConfig, PatternCollectionConfig,
+    alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, PatternCollectionConfig,
     SearchConfig, ALIASES, HEURISTICS, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
@@ -88,14 +88,16 @@ pub use heuristic::{Blind, Heuristic};
 pub use hmax::HMax;
 pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig, DEFAULT_SEED};
 pub use lmcut::{tie_breaking_order, LmCut};
-pub use pdb::{PatternDatabase, PatternError, MAX_PDB_SIZE};
+pub use pdb::{construction_bytes, PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;
 
 /// Runs the search `config` describes on `task`: builds its heuristic (see
 /// [`HeuristicConfig::build_with_limits`]: the hill climbing of `ipdb` stops at the
-/// limits too) and calls the engine ([`astar`]). Fails only if the task is invalid or a
+/// limits too, and a fixed pattern collection that does not fit the memory limit ends
+/// the run with [`Outcome::MemoryLimit`] before it is built) and calls the engine
+/// ([`astar`]). Fails only if the task is invalid or a
 /// pattern of the search string does not fit it.
 pub fn search(
     task: &task::Task,
@@ -103,7 +105,15 @@ pub fn search(
     limits: &SearchLimits,
     observer: Option<&mut dyn FnMut(Progress)>,
 ) -> Result<SearchResult, SearchError> {
-    let mut heuristic = config.heuristic.build_with_limits(task, limits)?;
+    let mut heuristic = match config.heuristic.build_with_limits(task, limits)? {
+        Built::Heuristic(h) => h,
+        Built::Stopped(limit) => {
+            return Ok(SearchResult {
+                outcome: Outcome::limit(limit),
+                statistics: Statistics::default(),
+            })
+        }
+    };
     match config.engine {
         Engine::AStar => astar(task, &mut heuristic, limits, observer),
     }

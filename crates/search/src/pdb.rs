@@ -35,7 +35,7 @@
 //! (the widest value of each width means "dead end"). A lookup computes the index from the
 //! unpacked state and reads one entry: O(pattern size), no allocation.
 
-use task::{Task, TaskError, VarId};
+use task::{Limit, Limits, Task, TaskError, VarId};
 
 use crate::astar::SearchError;
 use crate::radix_heap::RadixHeap;
@@ -105,26 +105,82 @@ pub fn pattern_size(task: &Task, pattern: &[VarId], limit: u64) -> Option<u64> {
     Some(size)
 }
 
+/// Peak bytes that building databases of `sizes` abstract states, one after the other
+/// with one builder, and keeping them all takes: an upper estimate, used to stop before
+/// allocating what a memory limit does not allow (`--overall-memory-limit`). Each kept
+/// table takes at most 4 bytes per state (`u32` entries); the builder's scratch for the
+/// largest takes its `u32` distances (4), the queue, which may hold every state and
+/// double its capacity once more (8), and the reached-state bits, rounded up to 4 for
+/// the radix heap's slack. The regression operators and match tree, proportional to the
+/// task's operators rather than to the states, are left out. Saturates instead of
+/// overflowing.
+pub fn construction_bytes(sizes: impl IntoIterator<Item = u64>) -> u64 {
+    let (mut tables, mut largest) = (0u64, 0u64);
+    for size in sizes {
+        tables = tables.saturating_add(size.saturating_mul(4));
+        largest = largest.max(size);
+    }
+    tables.saturating_add(largest.saturating_mul(16))
+}
+
 /// The databases of `patterns` (variable indices in any order) for `task`, in order,
 /// sharing one builder. Fails as [`PatternDatabase::new`] does.
 pub(crate) fn build_collection(
     task: &Task,
     patterns: &[Vec<u32>],
 ) -> Result<Vec<PatternDatabase>, PatternError> {
+    let (normalized, _) = normalize_collection(task, patterns)?;
+    let mut builder = PdbBuilder::new(task);
+    Ok(normalized.iter().map(|p| builder.build(p)).collect())
+}
+
+/// Like [`build_collection`], under `limits`: `Ok(Err(Limit::Memory))`, before anything
+/// is allocated, when [`construction_bytes`] of the collection would take memory use
+/// beyond the limit; `Ok(Err(Limit::Time))` when the deadline has passed before a
+/// database is begun (a database once begun is finished: its construction is linear in
+/// its states, which the memory limit bounds).
+pub(crate) fn build_collection_within(
+    task: &Task,
+    patterns: &[Vec<u32>],
+    limits: &Limits,
+) -> Result<Result<Vec<PatternDatabase>, Limit>, PatternError> {
+    let (normalized, sizes) = normalize_collection(task, patterns)?;
+    if limits.would_exceed(construction_bytes(sizes), || 0) {
+        return Ok(Err(Limit::Memory));
+    }
+    let mut builder = PdbBuilder::new(task);
+    let mut pdbs = Vec::with_capacity(normalized.len());
+    for pattern in &normalized {
+        if let Some(limit) = limits.reached(|| 0) {
+            return Ok(Err(limit));
+        }
+        pdbs.push(builder.build(pattern));
+    }
+    Ok(Ok(pdbs))
+}
+
+/// The patterns, sorted and deduplicated, with their numbers of abstract states, for a
+/// valid task; fails on an invalid task, a variable out of range or a pattern over
+/// [`MAX_PDB_SIZE`].
+fn normalize_collection(
+    task: &Task,
+    patterns: &[Vec<u32>],
+) -> Result<(Vec<Vec<VarId>>, Vec<u64>), PatternError> {
     task.validate()?;
     let mut normalized = Vec::with_capacity(patterns.len());
+    let mut sizes = Vec::with_capacity(patterns.len());
     for p in patterns {
         let pattern = normalize_pattern(task, p)?;
-        if pattern_size(task, &pattern, MAX_PDB_SIZE).is_none() {
+        let Some(size) = pattern_size(task, &pattern, MAX_PDB_SIZE) else {
             return Err(PatternError::TooLarge {
                 pattern: pattern.iter().map(|v| v.0).collect(),
                 limit: MAX_PDB_SIZE,
             });
-        }
+        };
         normalized.push(pattern);
+        sizes.push(size);
     }
-    let mut builder = PdbBuilder::new(task);
-    Ok(normalized.iter().map(|p| builder.build(p)).collect())
+    Ok((normalized, sizes))
 }
 
 impl From<PatternError> for SearchError {

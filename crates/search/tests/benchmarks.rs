@@ -29,6 +29,9 @@ fn translated_with_optimum(domain: &str, instance: &str) -> (Task, u64) {
         translate::Translation::Unsolvable { reason, .. } => {
             panic!("{domain}/{instance}: {reason}")
         }
+        translate::Translation::Stopped { limit, .. } => {
+            panic!("{domain}/{instance}: {limit} without limits")
+        }
     };
     (task, optimum)
 }
@@ -127,7 +130,12 @@ fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
         };
         for config in configs {
             let config = parse_search(config).unwrap();
-            let mut h = config.heuristic.build(&task).unwrap();
+            let mut h = config
+                .heuristic
+                .build_with_limits(&task, &SearchLimits::default())
+                .unwrap()
+                .into_heuristic()
+                .unwrap();
             let statistics = h.pdb_statistics().unwrap().clone();
             assert!(statistics.patterns > 0 || task.goal.is_empty());
             let result = astar(&task, &mut h, &SearchLimits::default(), None).unwrap();

@@ -502,7 +502,7 @@ proptest! {
         let space = Space::new(&task);
         let h_star = space.h_star(&task);
         for s in ["astar(cpdbs(systematic(2)))", "astar(cpdbs())", "astar(ipdb(num_samples=20))"] {
-            let mut h = parse_search(s).unwrap().heuristic.build(&task).unwrap();
+            let mut h = parse_search(s).unwrap().heuristic.build_with_limits(&task, &SearchLimits::default()).unwrap().into_heuristic().unwrap();
             check_admissible(&task, &space, &h_star, &mut h)?;
         }
     }

@@ -13,7 +13,10 @@ mod run;
 use std::time::{Duration, Instant};
 
 pub use fast_downward::{parse_log, FastDownward, FdLog};
-pub use run::{plan_task, translate_checked, MemoryProbe, Outcome, PlanRun, Translated};
+pub use run::{
+    plan_task, translate_checked, translate_checked_until, MemoryProbe, Outcome, PlanRun,
+    Translated,
+};
 
 use learn::{domain, levels, DomainOptions, Library};
 
@@ -47,13 +50,15 @@ impl Backend {
         memory: Option<MemoryProbe>,
     ) -> PlanRun {
         let start = Instant::now();
+        // One deadline for the whole run, translation included; a limit too far away to
+        // be an instant is no limit.
+        let deadline = task::deadline_after(start, time_limit);
         if let (Backend::Demoplan(_), Some(probe)) = (self, memory) {
             (probe.reset)();
         }
         let mut run = match self {
-            Backend::Demoplan(config) => match translate_checked(domain, problem) {
+            Backend::Demoplan(config) => match translate_checked_until(domain, problem, deadline) {
                 Translated::Task(task, translate_time) => {
-                    let deadline = time_limit.map(|l| start + l);
                     let mut run = plan_task(&task, config, deadline);
                     run.translate_time = translate_time;
                     run.total_time = start.elapsed();
@@ -131,15 +136,19 @@ pub fn solve(
     let mut results = Vec::new();
     for level in levels(library, options) {
         let domain = domain("demoplan", &level.operators);
-        let run = match (backend, translate_checked(&domain, problem)) {
+        // Each level's run has the time limit, translation included.
+        let level_start = Instant::now();
+        let deadline = match backend {
+            Backend::Demoplan(_) => task::deadline_after(level_start, time_limit),
+            Backend::FastDownward(..) => None,
+        };
+        let run = match (backend, translate_checked_until(&domain, problem, deadline)) {
             // Rejected (or broken) before search, whoever plans.
             (_, Translated::Done(run)) => run,
             (Backend::Demoplan(config), Translated::Task(task, translate_time)) => {
-                let level_start = Instant::now();
-                let deadline = time_limit.map(|l| level_start + l);
                 let mut run = plan_task(&task, config, deadline);
                 run.translate_time = translate_time;
-                run.total_time = level_start.elapsed() + translate_time;
+                run.total_time = level_start.elapsed();
                 run
             }
             (Backend::FastDownward(..), Translated::Task(..)) => {

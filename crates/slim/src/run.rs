@@ -20,6 +20,14 @@ pub enum Outcome {
 }
 
 impl Outcome {
+    /// The outcome of a run stopped at `limit`.
+    pub fn limit(limit: task::Limit) -> Outcome {
+        match limit {
+            task::Limit::Time => Outcome::TimeLimit,
+            task::Limit::Memory => Outcome::MemoryLimit,
+        }
+    }
+
     /// A short word for tables: `solved`, `relaxed-unreachable`, `unsolvable`, `limit`,
     /// `memory`, `error`.
     pub fn word(&self) -> &'static str {
@@ -118,6 +126,16 @@ pub enum Translated {
 
 /// Checks and translates a domain and problem.
 pub fn translate_checked(domain: &pddl::Domain, problem: &pddl::Problem) -> Translated {
+    translate_checked_until(domain, problem, None)
+}
+
+/// Like [`translate_checked`], stopping at the run's `deadline` (then the run is done
+/// with [`Outcome::TimeLimit`]).
+pub fn translate_checked_until(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    deadline: Option<Instant>,
+) -> Translated {
     let start = Instant::now();
     let done = |outcome: Outcome| {
         let mut run = PlanRun::ended(outcome);
@@ -130,9 +148,14 @@ pub fn translate_checked(domain: &pddl::Domain, problem: &pddl::Problem) -> Tran
             "problem does not fit the domain: {e}"
         )));
     }
-    match translate::translate(domain, problem) {
+    let limits = task::Limits {
+        deadline,
+        ..task::Limits::default()
+    };
+    match translate::translate_within(domain, problem, &limits) {
         Ok(translate::Translation::Task(t)) => Translated::Task(Box::new(t.task), start.elapsed()),
         Ok(translate::Translation::Unsolvable { .. }) => done(Outcome::RelaxedUnreachable),
+        Ok(translate::Translation::Stopped { limit, .. }) => done(Outcome::limit(limit)),
         Err(e) => done(Outcome::Error(e.to_string())),
     }
 }
@@ -151,7 +174,13 @@ pub fn plan_task(
         ..search::SearchLimits::default()
     };
     let mut heuristic = match config.heuristic.build_with_limits(task, &limits) {
-        Ok(h) => h,
+        Ok(search::Built::Heuristic(h)) => h,
+        Ok(search::Built::Stopped(limit)) => {
+            let mut run = PlanRun::ended(Outcome::limit(limit));
+            run.heuristic_time = start.elapsed();
+            run.total_time = run.heuristic_time;
+            return run;
+        }
         Err(e) => return PlanRun::ended(Outcome::Error(e.to_string())),
     };
     let heuristic_time = start.elapsed();

@@ -26,7 +26,10 @@
 //! # Ok::<(), task::TaskError>(())
 //! ```
 
+pub mod limits;
 pub mod sas_file;
+
+pub use limits::{deadline_after, Limit, Limits};
 
 use std::fmt;
 

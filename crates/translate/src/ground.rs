@@ -12,6 +12,7 @@
 use rustc_hash::{FxHashMap, FxHashSet};
 
 use crate::model::{Arg, CostTerm, Model, ObjId, Pattern, PredId, Schema};
+use crate::watch::Watch;
 use crate::TranslateError;
 
 /// Index of a ground atom in [`AtomTable`].
@@ -87,8 +88,10 @@ pub(crate) struct Grounding {
     pub unsolvable: Option<String>,
 }
 
-struct Reach<'m> {
+struct Reach<'m, 'w> {
     model: &'m Model,
+    /// The run's limits, ticked once per binding completed and atom taken.
+    watch: &'w Watch<'w>,
     atoms: AtomTable,
     by_pred: Vec<Vec<AtomId>>,
     by_arg: FxHashMap<(u32, u32, u32), Vec<AtomId>>,
@@ -97,7 +100,6 @@ struct Reach<'m> {
     /// Join order of the other positive preconditions, per (schema, trigger index).
     orders: FxHashMap<(usize, usize), Vec<usize>>,
     seen: FxHashSet<(u32, Box<[u32]>)>,
-    found: Vec<(u32, Box<[u32]>)>,
     /// Atoms with id <= current have been taken from the queue.
     current: AtomId,
 }
@@ -143,8 +145,8 @@ fn value(arg: Arg, binding: &[u32]) -> u32 {
     }
 }
 
-impl<'m> Reach<'m> {
-    fn new(model: &'m Model) -> Reach<'m> {
+impl<'m, 'w> Reach<'m, 'w> {
+    fn new(model: &'m Model, watch: &'w Watch<'w>) -> Reach<'m, 'w> {
         let mut triggers = vec![Vec::new(); model.predicates.len()];
         let mut orders = FxHashMap::default();
         for (si, s) in model.schemas.iter().enumerate() {
@@ -155,13 +157,13 @@ impl<'m> Reach<'m> {
         }
         Reach {
             model,
+            watch,
             atoms: AtomTable::default(),
             by_pred: vec![Vec::new(); model.predicates.len()],
             by_arg: FxHashMap::default(),
             triggers,
             orders,
             seen: FxHashSet::default(),
-            found: Vec::new(),
             current: 0,
         }
     }
@@ -176,13 +178,14 @@ impl<'m> Reach<'m> {
             if s.positive.is_empty() {
                 let mut binding = vec![UNBOUND; s.domains.len()];
                 self.complete(s, 0, &mut binding, &mut bindings);
-                for b in bindings.drain(..) {
-                    self.emit(si, b);
-                }
+                self.emit_all(si, &mut bindings);
             }
         }
         let mut atom = 0;
         while (atom as usize) < self.atoms.len() {
+            if self.watch.tick() {
+                return;
+            }
             self.current = atom;
             let pred = self.atoms.pred(atom);
             self.by_pred[pred.0 as usize].push(atom);
@@ -199,9 +202,7 @@ impl<'m> Reach<'m> {
                 if self.unify(s, &s.positive[i], atom, &mut binding, &mut Vec::new()) {
                     let order = self.orders.get(&(si, i)).cloned().unwrap_or_default();
                     self.join(s, &order, 0, &mut binding, &mut bindings);
-                    for b in bindings.drain(..) {
-                        self.emit(si, b);
-                    }
+                    self.emit_all(si, &mut bindings);
                 }
             }
             self.triggers[pred.0 as usize] = triggers;
@@ -288,6 +289,9 @@ impl<'m> Reach<'m> {
         let candidates = narrowest.unwrap_or(&self.by_pred[p.pred.0 as usize]);
         let mut newly = Vec::new();
         for &atom in candidates {
+            if self.watch.stopped().is_some() {
+                return;
+            }
             if self.unify(s, p, atom, binding, &mut newly) {
                 self.join(s, order, k + 1, binding, out);
                 for v in newly.drain(..) {
@@ -300,7 +304,9 @@ impl<'m> Reach<'m> {
     /// Binds the parameters no positive precondition mentions, then checks the rest.
     fn complete(&self, s: &Schema, v: usize, binding: &mut Vec<u32>, out: &mut Vec<Box<[u32]>>) {
         if v == binding.len() {
-            if self.satisfies_static_conditions(s, binding) {
+            // A schema with many parameters over many objects can have more bindings
+            // than memory holds: the limits are checked per binding.
+            if !self.watch.tick() && self.satisfies_static_conditions(s, binding) {
                 out.push(binding.clone().into_boxed_slice());
             }
             return;
@@ -310,6 +316,9 @@ impl<'m> Reach<'m> {
             return;
         }
         for o in &s.domains[v] {
+            if self.watch.stopped().is_some() {
+                break;
+            }
             binding[v] = o.0;
             self.complete(s, v + 1, binding, out);
         }
@@ -331,27 +340,44 @@ impl<'m> Reach<'m> {
             })
     }
 
+    /// Records the bindings found for `schema`, unless a limit stopped the grounding:
+    /// then what is left is thrown away at once (recording it could take as long again).
+    fn emit_all(&mut self, schema: usize, bindings: &mut Vec<Box<[u32]>>) {
+        if self.watch.stopped().is_some() {
+            *bindings = Vec::new();
+            return;
+        }
+        for b in bindings.drain(..) {
+            self.emit(schema, b);
+        }
+    }
+
+    /// Records a reachable binding once. The set of bindings is the only copy (one
+    /// allocation per ground action: a blow-up stopped at a limit frees them quickly).
     fn emit(&mut self, schema: usize, binding: Box<[u32]>) {
-        if !self.seen.insert((schema as u32, binding.clone())) {
+        let found = (schema as u32, binding);
+        if self.seen.contains(&found) {
             return;
         }
         let s = &self.model.schemas[schema];
         for p in &s.add {
-            let key = AtomTable::key(p.pred, p.args.iter().map(|a| value(*a, &binding)));
+            let key = AtomTable::key(p.pred, p.args.iter().map(|a| value(*a, &found.1)));
             self.atoms.intern(key);
         }
-        self.found.push((schema as u32, binding));
+        self.seen.insert(found);
     }
 }
 
-/// Grounds the model.
-pub(crate) fn ground(model: &Model) -> Result<Grounding, TranslateError> {
-    let mut reach = Reach::new(model);
+/// Grounds the model; `Ok(None)` if `watch` stopped it at a limit.
+pub(crate) fn ground(model: &Model, watch: &Watch) -> Result<Option<Grounding>, TranslateError> {
+    let mut reach = Reach::new(model, watch);
     reach.run();
-    let Reach {
-        atoms, mut found, ..
-    } = reach;
+    if watch.check() {
+        return Ok(None);
+    }
+    let Reach { atoms, seen, .. } = reach;
     // Deterministic order: by schema, then by arguments.
+    let mut found: Vec<(u32, Box<[u32]>)> = seen.into_iter().collect();
     found.sort_unstable();
     let fluent: Vec<bool> = (0..atoms.len() as AtomId)
         .map(|a| model.predicates[atoms.pred(a).0 as usize].fluent)
@@ -364,6 +390,9 @@ pub(crate) fn ground(model: &Model) -> Result<Grounding, TranslateError> {
     };
     let mut actions = Vec::with_capacity(found.len());
     'actions: for (schema, binding) in found {
+        if watch.tick() {
+            return Ok(None);
+        }
         let s = &model.schemas[schema as usize];
         let mut pre = Vec::new();
         for p in s
@@ -454,7 +483,7 @@ pub(crate) fn ground(model: &Model) -> Result<Grounding, TranslateError> {
     if goal_pos.iter().any(|a| goal_neg.binary_search(a).is_ok()) {
         unsolvable.get_or_insert_with(|| "the goal requires an atom and its negation".to_string());
     }
-    Ok(Grounding {
+    Ok(Some(Grounding {
         atoms,
         fluent,
         actions,
@@ -462,7 +491,7 @@ pub(crate) fn ground(model: &Model) -> Result<Grounding, TranslateError> {
         goal_pos,
         goal_neg,
         unsolvable,
-    })
+    }))
 }
 
 fn action_cost(model: &Model, s: &Schema, binding: &[u32]) -> Result<u64, TranslateError> {

@@ -42,6 +42,7 @@ use rustc_hash::{FxHashMap, FxHashSet};
 
 use crate::ground::{AtomId, Grounding};
 use crate::model::{Arg, Model, Pattern, PredId};
+use crate::watch::Watch;
 
 /// Candidates ever queued, as Fast Downward's `--invariant-generation-max-candidates`.
 const MAX_CANDIDATES: usize = 100_000;
@@ -726,8 +727,8 @@ fn key_of(part: &Part, args: &[u32]) -> Vec<u32> {
 }
 
 /// Synthesises invariants and returns their ground mutex groups (each sorted, size >= 2,
-/// deduplicated, in a deterministic order).
-pub(crate) fn mutex_groups(model: &Model, g: &Grounding) -> Vec<Group> {
+/// deduplicated, in a deterministic order); `None` if `watch` stopped it at a limit.
+pub(crate) fn mutex_groups(model: &Model, g: &Grounding, watch: &Watch) -> Option<Vec<Group>> {
     let mut names: Vec<(&str, usize)> = model
         .predicates
         .iter()
@@ -783,16 +784,25 @@ pub(crate) fn mutex_groups(model: &Model, g: &Grounding) -> Vec<Group> {
     }
     let mut invariants: Vec<Candidate> = Vec::new();
     while let Some(c) = synthesis.queue.pop_front() {
+        if watch.tick() {
+            return None;
+        }
         if synthesis.check(&c) {
             invariants.push(c);
         }
     }
-    ground_groups(model, g, &invariants)
+    let groups = ground_groups(model, g, &invariants, watch);
+    (!watch.check()).then_some(groups)
 }
 
 /// The groups of the invariants: per invariant and parameter binding with exactly one
 /// atom true initially, the reachable fluent atoms of that binding.
-fn ground_groups(model: &Model, g: &Grounding, invariants: &[Candidate]) -> Vec<Group> {
+fn ground_groups(
+    model: &Model,
+    g: &Grounding,
+    invariants: &[Candidate],
+    watch: &Watch,
+) -> Vec<Group> {
     // Initial atoms in the problem's order, each once.
     let mut init: Vec<(PredId, Vec<u32>)> = Vec::new();
     let mut init_seen: FxHashSet<(PredId, Vec<u32>)> = FxHashSet::default();
@@ -823,6 +833,9 @@ fn ground_groups(model: &Model, g: &Grounding, invariants: &[Candidate]) -> Vec<
         }
         let mut by_key: FxHashMap<Vec<u32>, Vec<AtomId>> = FxHashMap::default();
         for a in 0..g.atoms.len() as AtomId {
+            if watch.tick() {
+                return groups;
+            }
             if !g.fluent[a as usize] {
                 continue;
             }
@@ -941,8 +954,13 @@ mod tests {
         let domain = pddl::parse_domain(domain).expect("domain");
         let problem = pddl::parse_problem(problem).expect("problem");
         let model = Model::build(&domain, &problem).expect("model");
-        let g = crate::ground::ground(&model).expect("grounding");
-        let mut groups: Vec<Vec<String>> = mutex_groups(&model, &g)
+        let limits = task::Limits::default();
+        let watch = Watch::new(&limits);
+        let g = crate::ground::ground(&model, &watch)
+            .expect("grounding")
+            .expect("no limits");
+        let mut groups: Vec<Vec<String>> = mutex_groups(&model, &g, &watch)
+            .expect("no limits")
             .iter()
             .map(|group| {
                 let mut atoms: Vec<String> = group

@@ -38,6 +38,7 @@ mod log;
 mod model;
 mod sas;
 mod variable_order;
+mod watch;
 
 /// What translation can fail on, beyond what the PDDL checker already rejects.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -102,6 +103,13 @@ pub enum Translation {
         /// Sizes up to the point of the verdict.
         stats: TranslateStats,
     },
+    /// Translation stopped at a limit of [`translate_within`] before it was done.
+    Stopped {
+        /// The limit reached.
+        limit: task::Limit,
+        /// Sizes of the stages completed (zero for the rest).
+        stats: TranslateStats,
+    },
 }
 
 /// The plan steps of a sequence of a task's operators (a plan found by search): each
@@ -129,8 +137,32 @@ pub fn translate(
     domain: &pddl::Domain,
     problem: &pddl::Problem,
 ) -> Result<Translation, TranslateError> {
+    translate_within(domain, problem, &task::Limits::default())
+}
+
+/// Like [`translate`], under the run's `limits` (`--overall-time-limit`,
+/// `--overall-memory-limit`): grounding checks them per binding, atom and action,
+/// invariant synthesis per candidate and per atom it groups, and every stage at its end
+/// (see `watch.rs`); once one is reached translation returns
+/// [`Translation::Stopped`] within a few microseconds. Memory is read through
+/// `limits.memory_usage` only: without that probe only the deadline is checked.
+pub fn translate_within(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    limits: &task::Limits,
+) -> Result<Translation, TranslateError> {
+    let watch = watch::Watch::new(limits);
+    let stopped = |stats: TranslateStats| {
+        let limit = watch.stopped().unwrap_or(task::Limit::Time);
+        Ok(Translation::Stopped { limit, stats })
+    };
     let model = model::Model::build(domain, problem)?;
-    let grounding = ground::ground(&model)?;
+    if watch.check() {
+        return stopped(TranslateStats::default());
+    }
+    let Some(grounding) = ground::ground(&model, &watch)? else {
+        return stopped(TranslateStats::default());
+    };
     let mut stats = TranslateStats {
         reachable_atoms: grounding.atoms.len(),
         fluent_atoms: grounding.fluent.iter().filter(|&&f| f).count(),
@@ -141,8 +173,14 @@ pub fn translate(
         return Ok(Translation::Unsolvable { reason, stats });
     }
     let mut grounding = grounding;
-    let groups = invariants::mutex_groups(&model, &grounding);
-    if !grounding.prune_with_mutexes(&groups) {
+    let Some(groups) = invariants::mutex_groups(&model, &grounding, &watch) else {
+        return stopped(stats);
+    };
+    let reachable = grounding.prune_with_mutexes(&groups);
+    if watch.check() {
+        return stopped(stats);
+    }
+    if !reachable {
         let reason = "the goal is not reachable by actions whose preconditions are not mutex";
         return Ok(Translation::Unsolvable {
             reason: reason.into(),
@@ -165,6 +203,9 @@ pub fn translate(
         sas::Built::Task(result) => result,
         sas::Built::Unsolvable(reason) => return Ok(Translation::Unsolvable { reason, stats }),
     };
+    if watch.check() {
+        return stopped(stats);
+    }
     stats.variables_before_relevance = result.variables_before_relevance;
     result
         .task

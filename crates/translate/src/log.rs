@@ -13,6 +13,9 @@ impl Translation {
                 lines.push(format!("{} ground actions", stats.ground_actions));
                 lines.push(format!("Goal violated by relaxed reachability: {reason}"));
             }
+            Translation::Stopped { limit, .. } => {
+                lines.push(format!("Translation stopped: {limit} reached"));
+            }
             Translation::Task(t) => {
                 let s = &t.stats;
                 let sizes = t.task.sizes();

@@ -24,6 +24,9 @@ fn translate(domain: &str, instance: &str) -> task::Task {
         translate::Translation::Unsolvable { reason, .. } => {
             panic!("{domain}/{instance}: {reason}")
         }
+        translate::Translation::Stopped { limit, .. } => {
+            panic!("{domain}/{instance}: {limit} without limits")
+        }
     }
 }
 

@@ -359,6 +359,9 @@ proptest! {
         let found = match translate::translate(&domain, &problem).map_err(|e| TestCaseError::fail(e.to_string()))? {
             translate::Translation::Unsolvable { .. } => None,
             translate::Translation::Task(t) => search_sas(&t.task),
+            translate::Translation::Stopped { limit, .. } => {
+                return Err(TestCaseError::fail(format!("{limit} without limits")))
+            }
         };
         prop_assert_eq!(found, expected, "{}\n{}", d, p);
     }

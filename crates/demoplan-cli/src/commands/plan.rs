@@ -10,7 +10,9 @@ use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::{input, memory, output};
 
-/// `30s`, `5m`, `1h`, `90` (seconds), `infinity`.
+/// `30s`, `5m`, `1h`, `90` (seconds), `1e3`, `infinity`. A limit too large for a
+/// `Duration` (over about 5.8e11 years, `1e20`) is no limit, as `infinity` is; negative,
+/// NaN and infinite numbers are refused.
 pub fn parse_time_limit(text: &str) -> Result<Option<Duration>, String> {
     let t = text.trim().to_ascii_lowercase();
     if t == "infinity" {
@@ -23,7 +25,7 @@ pub fn parse_time_limit(text: &str) -> Result<Option<Duration>, String> {
         _ => (t.as_str(), 1.0),
     };
     match number.parse::<f64>() {
-        Ok(v) if v.is_finite() && v >= 0.0 => Ok(Some(Duration::from_secs_f64(v * unit))),
+        Ok(v) if v.is_finite() && v >= 0.0 => Ok(Duration::try_from_secs_f64(v * unit).ok()),
         _ => Err(format!(
             "invalid time limit `{text}`: expected e.g. 30s, 5m, 1h or infinity"
         )),
@@ -98,12 +100,19 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         })?;
     }
 
+    // One deadline from the process start for every phase: translation, heuristic
+    // construction and search.
+    let limits = task::Limits {
+        deadline: task::deadline_after(start, time_limit),
+        memory_limit_bytes: memory_limit,
+        memory_usage: Some(memory::heap_in_use),
+    };
     let mut pddl_files = None;
     let task = match args.files.as_slice() {
         [single] if is_sas_file(single) => read_sas(single)?,
         files => {
             let (domain, problem) = domain_and_problem(files)?;
-            let translated = translate_files(&domain, &problem)?;
+            let translated = translate_files(&domain, &problem, &limits)?;
             pddl_files = Some((domain, problem));
             match translated {
                 Translated::Task(task) => task,
@@ -114,17 +123,13 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
                     write_stats(&args, &report)?;
                     return Ok(ExitCode::UNSOLVABLE);
                 }
+                Translated::Stopped(limit) => return stopped_before_search(&args, start, limit),
             }
         }
     };
     let translate_time = start.elapsed();
 
     println!("Search: {config}");
-    let limits = search::SearchLimits {
-        deadline: time_limit.map(|d| start + d),
-        memory_limit_bytes: memory_limit,
-        memory_usage: Some(memory::heap_in_use),
-    };
     let mut observer = |p: search::Progress| {
         println!(
             "f = {}, {} evaluated, {} expanded [t={:.3}s]",
@@ -136,10 +141,14 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     };
     // The heuristic first, so that what building it did (the hill climbing of ipdb())
     // is reported before the search, as Fast Downward does.
-    let mut heuristic = config
+    let mut heuristic = match config
         .heuristic
         .build_with_limits(&task, &limits)
-        .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?;
+        .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?
+    {
+        search::Built::Heuristic(h) => h,
+        search::Built::Stopped(limit) => return stopped_before_search(&args, start, limit),
+    };
     if let Some(s) = heuristic.pdb_statistics() {
         println!("{s}");
     }
@@ -217,6 +226,36 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             ));
         }
     }
+    Ok(code)
+}
+
+/// A run stopped at `limit` before its search began (in translation, or building a
+/// pattern database that does not fit): Fast Downward's line and exit code, the closing
+/// statistics, `--stats-json`.
+fn stopped_before_search(
+    args: &PlanArgs,
+    start: Instant,
+    limit: task::Limit,
+) -> Result<ExitCode, Failure> {
+    let (line, outcome, code) = match limit {
+        task::Limit::Time => (
+            "Time limit reached. Abort search.",
+            "out_of_time",
+            ExitCode::OUT_OF_TIME,
+        ),
+        task::Limit::Memory => (
+            "Memory limit has been reached.",
+            "out_of_memory",
+            ExitCode::OUT_OF_MEMORY,
+        ),
+    };
+    println!("{line}");
+    let report = Report {
+        outcome,
+        ..Report::unsolvable_before_search(start)
+    };
+    report.print();
+    write_stats(args, &report)?;
     Ok(code)
 }
 
@@ -330,6 +369,12 @@ mod tests {
         assert_eq!(parse_time_limit("infinity"), Ok(None));
         assert!(parse_time_limit("10x").is_err());
         assert!(parse_time_limit("-1s").is_err());
+        assert!(parse_time_limit("nan").is_err());
+        assert!(parse_time_limit("inf").is_err());
+        // Beyond what a deadline can be: no limit, never a panic.
+        assert_eq!(parse_time_limit("1e20"), Ok(None));
+        assert_eq!(parse_time_limit("1e300h"), Ok(None));
+        assert_eq!(parse_time_limit("1e3"), Ok(Some(Duration::from_secs(1000))));
     }
 
     #[test]

@@ -14,6 +14,8 @@ pub enum Translated {
     Task(task::Task),
     /// Unsolvable even in the relaxation (the reason was printed).
     Unsolvable,
+    /// Stopped at the run's time or memory limit (`plan`'s limits).
+    Stopped(task::Limit),
 }
 
 /// Resolves `[DOMAIN] PROBLEM` (Fast Downward's rules when the domain is omitted).
@@ -25,8 +27,13 @@ pub fn domain_and_problem(files: &[PathBuf]) -> Result<(PathBuf, PathBuf), Failu
     }
 }
 
-/// Parses, checks and translates, printing Fast Downward's translator statistics.
-pub fn translate_files(domain: &Path, problem: &Path) -> Result<Translated, Failure> {
+/// Parses, checks and translates under the run's `limits`, printing Fast Downward's
+/// translator statistics.
+pub fn translate_files(
+    domain: &Path,
+    problem: &Path,
+    limits: &task::Limits,
+) -> Result<Translated, Failure> {
     let start = Instant::now();
     println!("Parsing...");
     let parsed = input::read_task(domain, problem)?;
@@ -34,12 +41,14 @@ pub fn translate_files(domain: &Path, problem: &Path) -> Result<Translated, Fail
         "Parsing: [{:.3}s wall-clock]",
         start.elapsed().as_secs_f64()
     );
-    let result = translate::translate(&parsed.domain, &parsed.problem).map_err(|e| {
-        Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
-    })?;
+    let result =
+        translate::translate_within(&parsed.domain, &parsed.problem, limits).map_err(|e| {
+            Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
+        })?;
     print!("{}", result.log());
     let translated = match result {
         translate::Translation::Unsolvable { .. } => Translated::Unsolvable,
+        translate::Translation::Stopped { limit, .. } => Translated::Stopped(limit),
         translate::Translation::Task(t) => Translated::Task(t.task),
     };
     println!(
@@ -68,9 +77,16 @@ pub fn trivially_unsolvable_task() -> task::Task {
 pub fn run(args: TranslateArgs) -> Result<ExitCode, Failure> {
     let (domain, problem) = domain_and_problem(&args.files)?;
     let sas_file = &args.sas_file;
-    let (task, code) = match translate_files(&domain, &problem)? {
+    let (task, code) = match translate_files(&domain, &problem, &task::Limits::default())? {
         Translated::Task(task) => (task, ExitCode::SUCCESS),
         Translated::Unsolvable => (trivially_unsolvable_task(), ExitCode::UNSOLVABLE),
+        // Without limits nothing stops translation; were it stopped, nothing is written.
+        Translated::Stopped(limit) => {
+            return Err(Failure::plain(
+                ExitCode::CRITICAL_ERROR,
+                format!("translation stopped at a {limit} it does not have"),
+            ))
+        }
     };
     output::write_atomically(sas_file, &task::sas_file::write(&task))?;
     println!("Wrote {}", sas_file.display());

@@ -1,0 +1,127 @@
+//! The time and memory limits of one planning run, shared by every phase that honours
+//! them: translation (grounding, invariant synthesis, reachability), heuristic
+//! construction and search. Each phase checks them cooperatively, at points where it can
+//! stop cleanly, and reports a [`Limit`] as its outcome: reaching a limit is a result,
+//! not an error.
+
+use std::time::{Duration, Instant};
+
+/// When to give up. The default has no limits.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Limits {
+    /// Stop with [`Limit::Time`] once this instant has passed.
+    pub deadline: Option<Instant>,
+    /// Stop with [`Limit::Memory`] once memory use exceeds this many bytes, and do not
+    /// start an allocation that an estimate says would exceed it.
+    pub memory_limit_bytes: Option<u64>,
+    /// The process's memory use in bytes (e.g. a counting allocator's reading). Without
+    /// it a phase counts the bytes of its own main structures, which leaves out
+    /// everything else.
+    pub memory_usage: Option<fn() -> u64>,
+}
+
+/// A limit that was reached.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// The deadline passed.
+    Time,
+    /// Memory use exceeded the limit, or would have.
+    Memory,
+}
+
+impl std::fmt::Display for Limit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Limit::Time => "time limit",
+            Limit::Memory => "memory limit",
+        })
+    }
+}
+
+/// The deadline `limit` after `start`, or `None` ("no limit") when there is no limit or
+/// the instant cannot be represented (a limit of centuries, `1e20` seconds): no run
+/// lasts that long, so such a limit is no limit. Never panics.
+pub fn deadline_after(start: Instant, limit: Option<Duration>) -> Option<Instant> {
+    limit.and_then(|l| start.checked_add(l))
+}
+
+impl Limits {
+    /// Memory in use as the probe reads it, or `own_bytes` without a probe.
+    pub fn memory_in_use(&self, own_bytes: impl FnOnce() -> u64) -> u64 {
+        match self.memory_usage {
+            Some(read) => read(),
+            None => own_bytes(),
+        }
+    }
+
+    /// The limit reached now, if any: the deadline first, then memory (see
+    /// [`memory_in_use`](Self::memory_in_use)).
+    pub fn reached(&self, own_bytes: impl FnOnce() -> u64) -> Option<Limit> {
+        if self.deadline.is_some_and(|d| Instant::now() >= d) {
+            return Some(Limit::Time);
+        }
+        let limit = self.memory_limit_bytes?;
+        (self.memory_in_use(own_bytes) > limit).then_some(Limit::Memory)
+    }
+
+    /// True if allocating `bytes` more on top of what is in use would exceed the memory
+    /// limit: the check made before a large allocation whose size is known in advance.
+    pub fn would_exceed(&self, bytes: u64, own_bytes: impl FnOnce() -> u64) -> bool {
+        self.memory_limit_bytes
+            .is_some_and(|limit| self.memory_in_use(own_bytes).saturating_add(bytes) > limit)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_limits_are_never_reached() {
+        let limits = Limits::default();
+        assert_eq!(limits.reached(|| u64::MAX), None);
+        assert!(!limits.would_exceed(u64::MAX, || u64::MAX));
+    }
+
+    #[test]
+    fn a_past_deadline_is_reached_before_memory() {
+        let limits = Limits {
+            deadline: Some(Instant::now()),
+            memory_limit_bytes: Some(0),
+            memory_usage: None,
+        };
+        assert_eq!(limits.reached(|| 1), Some(Limit::Time));
+    }
+
+    #[test]
+    fn memory_is_read_from_the_probe_when_there_is_one() {
+        fn probe() -> u64 {
+            1000
+        }
+        let own = Limits {
+            memory_limit_bytes: Some(500),
+            ..Limits::default()
+        };
+        assert_eq!(own.reached(|| 400), None);
+        assert_eq!(own.reached(|| 501), Some(Limit::Memory));
+        assert!(own.would_exceed(101, || 400));
+        assert!(!own.would_exceed(100, || 400));
+        assert!(own.would_exceed(u64::MAX, || 400), "no overflow");
+        let probed = Limits {
+            memory_usage: Some(probe),
+            ..own
+        };
+        assert_eq!(probed.reached(|| 0), Some(Limit::Memory));
+    }
+
+    #[test]
+    fn deadlines_too_far_away_mean_no_limit() {
+        let now = Instant::now();
+        assert_eq!(deadline_after(now, None), None);
+        assert_eq!(deadline_after(now, Some(Duration::MAX)), None);
+        assert_eq!(
+            deadline_after(now, Some(Duration::from_secs(1))),
+            Some(now + Duration::from_secs(1))
+        );
+    }
+}

@@ -56,13 +56,13 @@ mod parser;
 mod reader;
 mod writer;
 
-pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_NAME_LEN};
+pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_ENTITIES, MAX_NAME_LEN};
 pub use error::{ErrorKind, ReadError, WriteError};
 pub use model::{
     Contact, Entity, EntityId, EntityKind, EntityState, Frame, Header, Pose, Quaternion, Recording,
     Vec3,
 };
-pub use reader::Reader;
+pub use reader::{Reader, MAX_LINE_BYTES};
 pub use writer::Writer;
 
 /// The `format` field of a recording's header.

@@ -45,18 +45,19 @@ fn every_input_that_ever_crashed_a_fuzz_target_is_handled() {
     assert!(failures.is_empty(), "crashed again: {failures:?}");
 }
 
-/// Every target has its committed corpus, which the CI's fuzz smoke starts from.
+/// Every target has a committed corpus to start from (its seeds, `fuzz/corpus-seeds`,
+/// and what earlier runs found, `fuzz/corpus`), which the CI's fuzz smoke starts from,
+/// and its cargo-fuzz target.
 #[test]
 fn every_target_has_a_committed_corpus() {
     let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz");
+    let inputs = |folder: &Path| std::fs::read_dir(folder).map_or(0, |d| d.count());
     for (target, _) in fuzz_checks::TARGETS {
-        let corpus = fuzz.join("corpus").join(target);
-        let count = std::fs::read_dir(&corpus).map(|d| d.count()).unwrap_or(0);
-        assert!(count > 0, "fuzz/corpus/{target} is empty or missing");
+        let count = inputs(&fuzz.join("corpus-seeds").join(target))
+            + inputs(&fuzz.join("corpus").join(target));
+        assert!(count > 0, "{target} has no committed inputs to start from");
         assert!(
-            fuzz.join("fuzz_targets")
-                .join(format!("{target}.rs"))
-                .is_file(),
+            fuzz.join("fuzz_targets").join(format!("{target}.rs")).is_file(),
             "fuzz/fuzz_targets/{target}.rs is missing"
         );
     }

@@ -1981,6 +1981,81 @@ fn study_writes_every_file_and_resumes() {
 }
 
 #[test]
+fn a_study_in_child_processes_gives_the_runs_of_one_in_this_process() {
+    let tmp = tempdir("study-jobs");
+    let run = |jobs: &str| {
+        let out = tmp.join(format!("j{jobs}"));
+        let done = demoplan()
+            .arg("study")
+            .arg("-o")
+            .arg(&out)
+            // Cells far within their limit: an iPDB climb cut by its deadline would
+            // differ with the machine's load, not with how the cells are run.
+            .args(["--seeds", "3", "--hands", "1,2", "--heights", "2"])
+            .args(["--time-limit", "60", "-j", jobs])
+            .output()
+            .unwrap();
+        assert_eq!(done.status.code(), Some(0), "{}", transcript(&done));
+        let stdout = String::from_utf8_lossy(&done.stdout).into_owned();
+        assert!(stdout.contains(&format!("{jobs} at a time")), "{stdout}");
+        let text = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
+        let mut records: Vec<serde_json::Value> = text
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        records.sort_by_key(|r| r["id"].as_str().unwrap().to_string());
+        records
+    };
+    let (alone, parallel) = (run("1"), run("2"));
+    assert_eq!(alone.len(), 12);
+    assert_eq!(alone.len(), parallel.len());
+    let same = |r: &serde_json::Value| {
+        let w: Vec<_> = r["widening"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| (s["prio"].clone(), s["outcome"].clone()))
+            .collect();
+        (
+            r["id"].clone(),
+            r["outcome"].clone(),
+            r["cost"].clone(),
+            r["expansions"].clone(),
+            r["plan"].clone(),
+            r["executed"].clone(),
+            format!("{w:?}"),
+        )
+    };
+    for (a, b) in alone.iter().zip(&parallel) {
+        assert_eq!(same(a), same(b));
+        assert!(b["peak_memory_kb"].as_u64().unwrap() > 0, "{b}");
+    }
+    // Algorithm 1 took priority 1's run from the grid: the same time, measured once.
+    let by_id: std::collections::HashMap<&str, &serde_json::Value> = parallel
+        .iter()
+        .map(|r| (r["id"].as_str().unwrap(), r))
+        .collect();
+    let mut reused = 0;
+    for r in parallel.iter().filter(|r| r["level"] == "alg1") {
+        let first = &r["widening"][0];
+        let p1 = parallel
+            .iter()
+            .find(|p| {
+                p["level"] == "prio-1"
+                    && p["planner"] == r["planner"]
+                    && p["conditions"] == r["conditions"]
+            })
+            .unwrap();
+        assert!(by_id.contains_key(p1["id"].as_str().unwrap()));
+        if p1["outcome"] != "limit" {
+            assert_eq!(first["times"], p1["times"], "{r}");
+            reused += 1;
+        }
+    }
+    assert_eq!(reused, 4);
+}
+
+#[test]
 fn study_refuses_bad_options_before_writing_anything() {
     let tmp = tempdir("study-options");
     for (args, what) in [

@@ -2,7 +2,7 @@
 //! them), the domain and problem of a cell, the planning run and the execution check.
 
 use std::collections::HashMap;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use grounding::GroundingConfig;
 use learn::{levels, problem, tower_goal, DomainOptions, Grouping, Library, Scene};
@@ -77,9 +77,16 @@ impl Lab {
             .ok_or_else(|| ExperimentError::Condition("library missing".into()))
     }
 
-    /// Computes one cell.
-    pub fn run(&mut self, cell: &Cell) -> Result<RunRecord, ExperimentError> {
-        let backend = self.backend(cell.planner, cell.time_limit)?;
+    /// Computes one cell. An Algorithm 1 cell takes the run of a level it tries from
+    /// `known` when the grid has that level as a cell of its own (same conditions,
+    /// planner, limit and repeat) and it is there already: the same planning run,
+    /// measured once. Without it the cell computes every level itself.
+    pub fn run(&mut self, cell: &Cell, known: &Known) -> Result<RunRecord, ExperimentError> {
+        let planners = Planners {
+            fast_downward: self.fast_downward.clone(),
+            memory: self.memory,
+        };
+        let backend = planners.backend(cell.planner, cell.time_limit)?;
         let memory = self.memory;
         let conditions = cell.conditions.clone();
         let options = DomainOptions {
@@ -88,63 +95,12 @@ impl Lab {
         let problem = tower_problem(&conditions)?;
         let library = self.library(&conditions)?;
         let all = levels(library, options);
-        let mut record = RunRecord {
-            id: cell.id(),
-            conditions: conditions.clone(),
-            level: cell.level.name(),
-            planner: cell.planner.name().to_string(),
-            time_limit_s: cell.time_limit.as_secs_f64(),
-            repeat: cell.repeat,
-            prio: 0,
-            operators: 0,
-            outcome: String::new(),
-            times: Times::default(),
-            expansions: None,
-            generated: None,
-            cost: None,
-            length: None,
-            peak_memory_kb: None,
-            executed: None,
-            plan: Vec::new(),
-            widening: Vec::new(),
-            error: None,
-        };
-        let limit = Some(cell.time_limit);
+        let mut record = RunRecord::blank(cell);
         let level = match cell.level {
             LevelChoice::Prio(n) => all.iter().find(|l| l.prio == n),
             LevelChoice::Full => all.last(),
             LevelChoice::Algorithm1 => {
-                let start = Instant::now();
-                let solved = slim::solve(library, options, &problem, &backend, limit, |_| {});
-                let mut times = Times::default();
-                for l in &solved.levels {
-                    let step = Times::of(&l.run);
-                    times.add(&step);
-                    record.widening.push(WideningStep {
-                        prio: l.prio,
-                        operators: l.operators,
-                        outcome: l.run.outcome.word().to_string(),
-                        times: step,
-                    });
-                }
-                times.total_s = start.elapsed().as_secs_f64();
-                record.times = times;
-                let last = solved.plan_level().or(solved.levels.last());
-                if let Some(l) = last {
-                    record.prio = l.prio;
-                    record.operators = l.operators;
-                    fill(&mut record, &l.run, &l.domain, &problem, false);
-                }
-                record.outcome = match solved.plan_level() {
-                    Some(_) => "solved",
-                    None if solved.any_limit() => "limit",
-                    None if solved.levels.is_empty() => "error",
-                    None => "unsolvable",
-                }
-                .to_string();
-                if solved.levels.is_empty() {
-                    record.error = Some("the library has no level".into());
-                }
+                planners.algorithm1(cell, &all, &problem, known, &mut record)?;
                 return Ok(record);
             }
         };
@@ -159,12 +115,120 @@ impl Lab {
             )));
         };
         let domain = learn::domain("demoplan", &level.operators);
-        let run = backend.plan_measured(&domain, &problem, limit, memory);
+        let run = backend.plan_measured(&domain, &problem, Some(cell.time_limit), memory);
         record.prio = level.prio;
         record.operators = level.operators.len();
         record.times = Times::of(&run);
         fill(&mut record, &run, &domain, &problem, true);
         Ok(record)
+    }
+}
+
+/// Who plans a cell's runs: Fast Downward if the grid runs it, and how demoplan's runs
+/// measure their peak heap.
+struct Planners {
+    fast_downward: Option<FastDownward>,
+    memory: Option<MemoryProbe>,
+}
+
+impl Planners {
+    /// The paper's Algorithm 1 under one time budget, the cell's limit: priority 1, 2,
+    /// ... until a level gives a plan, each level with what is left of the budget, so
+    /// that its cumulative time is comparable with one run on the full domain. A level
+    /// that proves there is no plan passes the rest of the budget on; a level that hits
+    /// the limit ends the widening (a wider domain only searches more).
+    fn algorithm1(
+        &self,
+        cell: &Cell,
+        all: &[learn::Level<'_>],
+        problem: &pddl::Problem,
+        known: &Known,
+        record: &mut RunRecord,
+    ) -> Result<(), ExperimentError> {
+        let budget = cell.time_limit.as_secs_f64();
+        let memory = self.memory;
+        let mut times = Times::default();
+        let mut peak: Option<u64> = None;
+        let mut outcome = if all.is_empty() {
+            "error"
+        } else {
+            "unsolvable"
+        };
+        for (i, level) in all.iter().enumerate() {
+            let left = budget - times.total_s;
+            if left <= 0.0 {
+                outcome = "limit";
+                break;
+            }
+            let domain = learn::domain("demoplan", &level.operators);
+            let sibling = |choice: LevelChoice| {
+                known.get(
+                    &Cell {
+                        level: choice,
+                        ..cell.clone()
+                    }
+                    .id(),
+                )
+            };
+            let reused = sibling(LevelChoice::Prio(level.prio))
+                .or_else(|| {
+                    (i + 1 == all.len())
+                        .then(|| sibling(LevelChoice::Full))
+                        .flatten()
+                })
+                .filter(|r| r.outcome != "error");
+            let mut step = match reused {
+                Some(r) => r.clone(),
+                None => {
+                    let left = Duration::from_secs_f64(left);
+                    let backend = self.backend(cell.planner, left)?;
+                    let run = backend.plan_measured(&domain, problem, Some(left), memory);
+                    let mut step = record.clone();
+                    step.times = Times::of(&run);
+                    step.outcome = run.outcome.word().to_string();
+                    fill(&mut step, &run, &domain, problem, false);
+                    step
+                }
+            };
+            // A level run that outlasted what is left would have been stopped there.
+            if step.times.total_s > left {
+                step.times = step.times.truncated(left);
+                step.outcome = "limit".to_string();
+            }
+            times.add(&step.times);
+            peak = peak.max(step.peak_memory_kb);
+            record.widening.push(WideningStep {
+                prio: level.prio,
+                operators: level.operators.len(),
+                outcome: step.outcome.clone(),
+                times: step.times,
+            });
+            record.prio = level.prio;
+            record.operators = level.operators.len();
+            record.expansions = step.expansions;
+            record.generated = step.generated;
+            record.error = step.error.clone();
+            outcome = match step.outcome.as_str() {
+                "solved" => {
+                    record.cost = step.cost;
+                    record.length = step.length;
+                    record.plan = step.plan;
+                    record.executed = step.executed;
+                    "solved"
+                }
+                "limit" | "memory" => "limit",
+                "error" => "error",
+                _ => continue,
+            };
+            break;
+        }
+        if all.is_empty() {
+            record.error = Some("the library has no level".into());
+        }
+        record.times = times;
+        record.peak_memory_kb = peak;
+        record.outcome = outcome.to_string();
+        Ok(())
     }
 
     fn backend(&self, planner: Planner, limit: Duration) -> Result<Backend, ExperimentError> {
@@ -182,6 +246,9 @@ impl Lab {
         }
     }
 }
+
+/// Records already computed, by cell id (see [`Lab::run`]).
+pub type Known = HashMap<String, RunRecord>;
 
 /// Outcome, counts, plan and execution check of a run into its record.
 fn fill(
@@ -274,4 +341,91 @@ pub fn execute(domain: &pddl::Domain, problem: &pddl::Problem, plan: &[String]) 
     cubeworld::execute(domain, problem, &steps)
         .ok()
         .map(|report| report.success())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cell(level: LevelChoice, hands: usize) -> Cell {
+        Cell {
+            conditions: Conditions::paper_goal(7, 2, hands),
+            level,
+            planner: Planner::Lmcut,
+            time_limit: Duration::from_secs(20),
+            repeat: 0,
+        }
+    }
+
+    fn lab() -> Lab {
+        Lab::new(simulate::SimParams::default(), None, None)
+    }
+
+    #[test]
+    fn algorithm1_reuses_the_run_of_a_level_the_grid_has() {
+        let mut lab = lab();
+        let p1 = lab
+            .run(&cell(LevelChoice::Prio(1), 1), &Known::new())
+            .unwrap();
+        assert!(p1.solved(), "{p1:?}");
+        // Computed alone, Algorithm 1 plans on priority 1 itself.
+        let alone = lab
+            .run(&cell(LevelChoice::Algorithm1, 1), &Known::new())
+            .unwrap();
+        assert_eq!((alone.outcome.as_str(), alone.prio), ("solved", 1));
+        assert_eq!(alone.plan, p1.plan);
+        // With priority 1's cell known, it takes that run, times and all.
+        let mut known = Known::new();
+        let mut slow = p1.clone();
+        slow.times.search_s = 7.5;
+        slow.times.total_s = 8.0;
+        known.insert(slow.id.clone(), slow.clone());
+        let reused = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
+        assert_eq!(reused.outcome, "solved");
+        assert_eq!(reused.times, slow.times);
+        assert_eq!(reused.widening.len(), 1);
+        assert_eq!(reused.widening[0].times, slow.times);
+        assert_eq!(reused.plan, p1.plan);
+        assert_eq!(reused.executed, Some(true));
+    }
+
+    #[test]
+    fn algorithm1_has_one_budget_for_every_level() {
+        let mut lab = lab();
+        let p1 = lab
+            .run(&cell(LevelChoice::Prio(1), 1), &Known::new())
+            .unwrap();
+        // A level run that took longer than the cell's limit would have been stopped:
+        // Algorithm 1 hit its limit, at the limit, with its phases cut in order.
+        let mut known = Known::new();
+        let mut slow = p1.clone();
+        slow.times.translate_s = 1.0;
+        slow.times.heuristic_s = 4.0;
+        slow.times.search_s = 25.0;
+        slow.times.total_s = 30.0;
+        known.insert(slow.id.clone(), slow);
+        let cut = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
+        assert_eq!(cut.outcome, "limit");
+        assert_eq!(cut.times.total_s, 20.0);
+        assert_eq!(
+            (
+                cut.times.translate_s,
+                cut.times.heuristic_s,
+                cut.times.search_s
+            ),
+            (1.0, 4.0, 15.0)
+        );
+        assert!(cut.plan.is_empty() && cut.cost.is_none());
+    }
+
+    #[test]
+    fn a_failed_sibling_is_computed_again() {
+        let mut lab = lab();
+        let p1 = cell(LevelChoice::Prio(1), 1);
+        let mut known = Known::new();
+        known.insert(p1.id(), RunRecord::failed(&p1, "crashed".into()));
+        let alg1 = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
+        assert_eq!(alg1.outcome, "solved", "{alg1:?}");
+        assert!(alg1.error.is_none());
+    }
 }

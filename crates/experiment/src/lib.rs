@@ -30,6 +30,7 @@
 //! ```
 
 mod cell;
+mod children;
 mod findings;
 mod lab;
 mod output;
@@ -45,12 +46,13 @@ use std::time::{Duration, Instant};
 pub use report::paper;
 
 pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAMS};
+pub use children::CellCommand;
 pub use findings::findings;
-pub use lab::{execute, learn_study, tower_problem, towers, Lab};
+pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
-pub use reproduce::{reproduce, ReproduceOptions, Reproduction};
-pub use study::{study, study_grid, StudyOptions, StudyOutcome};
+pub use reproduce::{reproduce, reproduce_cell, ReproduceOptions, Reproduction};
+pub use study::{study, study_cell, study_grid, StudyOptions, StudyOutcome};
 
 /// Where a grid is: cells done of the total, the cell now running, time since start.
 #[derive(Debug, Clone, Copy)]
@@ -90,11 +92,23 @@ pub enum ExperimentError {
     Io { path: PathBuf, message: String },
 }
 
-/// Runs `cells` in order, skipping those whose id has a record in `done`, appending
-/// each new record to `results` (when given) as it finishes. Returns the records of
-/// every cell, `done`'s and the new ones, in the order of `cells`.
+/// How a grid's cells are computed.
+#[derive(Debug)]
+pub enum Runner<'a> {
+    /// In this process, one after another (each run's peak heap measured alone).
+    InProcess(&'a mut Lab),
+    /// In child processes, several at a time ([`CellCommand`]); needs a results file,
+    /// where the children of Algorithm 1 cells find the runs they reuse.
+    Children(&'a CellCommand),
+}
+
+/// Runs `cells`, skipping those whose id has a record in `done`, appending each new
+/// record to `results` (when given) as it finishes. Algorithm 1 cells run after every
+/// other cell, so that they reuse the runs of the levels the grid has as cells
+/// ([`Lab::run`]). Returns the records of every cell, `done`'s and the new ones, in
+/// the order of `cells`.
 pub fn run_cells(
-    lab: &mut Lab,
+    runner: Runner<'_>,
     cells: &[Cell],
     done: &[RunRecord],
     results: Option<&std::path::Path>,
@@ -102,33 +116,97 @@ pub fn run_cells(
     describe: &dyn Fn(&Cell) -> String,
 ) -> Result<Vec<RunRecord>, ExperimentError> {
     let start = Instant::now();
-    let by_id: std::collections::HashMap<&str, &RunRecord> =
-        done.iter().map(|r| (r.id.as_str(), r)).collect();
-    let mut out = Vec::with_capacity(cells.len());
-    for (i, cell) in cells.iter().enumerate() {
-        let id = cell.id();
-        if let Some(r) = by_id.get(id.as_str()) {
-            out.push((*r).clone());
-            continue;
-        }
-        let what = describe(cell);
-        progress(Progress {
-            done: i,
-            total: cells.len(),
-            current: &what,
-            elapsed: start.elapsed(),
-        });
-        let record = lab.run(cell)?;
+    let ids: Vec<String> = cells.iter().map(Cell::id).collect();
+    let mut known: Known = done.iter().map(|r| (r.id.clone(), r.clone())).collect();
+    let (levels, widenings): (Vec<usize>, Vec<usize>) = (0..cells.len())
+        .filter(|&i| !known.contains_key(&ids[i]))
+        .partition(|&i| cells[i].level != LevelChoice::Algorithm1);
+    let total = cells.len();
+    let mut finished = total - levels.len() - widenings.len();
+    let record = |i: usize, r: RunRecord, known: &mut Known| {
         if let Some(path) = results {
-            append_record(path, &record)?;
+            append_record(path, &r)?;
         }
-        out.push(record);
+        known.insert(ids[i].clone(), r);
+        Ok::<(), ExperimentError>(())
+    };
+    let mut runner = runner;
+    for phase in [levels, widenings] {
+        match &mut runner {
+            Runner::InProcess(lab) => {
+                for i in phase {
+                    let what = describe(&cells[i]);
+                    progress(Progress {
+                        done: finished,
+                        total,
+                        current: &what,
+                        elapsed: start.elapsed(),
+                    });
+                    let r = lab.run(&cells[i], &known)?;
+                    record(i, r, &mut known)?;
+                    finished += 1;
+                }
+            }
+            Runner::Children(command) => {
+                if results.is_none() {
+                    return Err(ExperimentError::Options(
+                        "cells in child processes need a results file".into(),
+                    ));
+                }
+                let mut running = String::new();
+                command.run_all(cells, &phase, &mut |event| {
+                    match event {
+                        children::Event::Started(i) => running = describe(&cells[i]),
+                        children::Event::Finished(i, r) => {
+                            record(i, *r, &mut known)?;
+                            finished += 1;
+                        }
+                    }
+                    progress(Progress {
+                        done: finished,
+                        total,
+                        current: &running,
+                        elapsed: start.elapsed(),
+                    });
+                    Ok(())
+                })?;
+            }
+        }
     }
     progress(Progress {
-        done: cells.len(),
-        total: cells.len(),
+        done: total,
+        total,
         current: "done",
         elapsed: start.elapsed(),
     });
-    Ok(out)
+    ids.iter()
+        .map(|id| {
+            known
+                .get(id)
+                .cloned()
+                .ok_or_else(|| ExperimentError::Condition(format!("cell {id} has no record")))
+        })
+        .collect()
+}
+
+/// Computes the cell of `cells` whose id is `id`, as a child process of
+/// [`CellCommand`] does: Algorithm 1 reuses the records already in `results`.
+pub fn run_cell(
+    lab: &mut Lab,
+    cells: &[Cell],
+    id: &str,
+    results: &std::path::Path,
+) -> Result<RunRecord, ExperimentError> {
+    let cell = cells.iter().find(|c| c.id() == id).ok_or_else(|| {
+        ExperimentError::Options(format!("--cell {id}: no cell of this grid has that id"))
+    })?;
+    let known: Known = if cell.level == LevelChoice::Algorithm1 {
+        read_records(results)?
+            .into_iter()
+            .map(|r| (r.id.clone(), r))
+            .collect()
+    } else {
+        Known::new()
+    };
+    lab.run(cell, &known)
 }

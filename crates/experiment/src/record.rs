@@ -42,6 +42,20 @@ impl Times {
         }
     }
 
+    /// What a run with these times had spent when stopped after `limit` seconds: its
+    /// phases run in order (translate, heuristic, search), so each keeps what fits.
+    pub(crate) fn truncated(&self, limit: f64) -> Times {
+        let translate_s = self.translate_s.min(limit);
+        let heuristic_s = self.heuristic_s.min(limit - translate_s);
+        let search_s = self.search_s.min(limit - translate_s - heuristic_s);
+        Times {
+            translate_s,
+            heuristic_s,
+            search_s,
+            total_s: limit.min(self.total_s),
+        }
+    }
+
     pub(crate) fn add(&mut self, other: &Times) {
         self.translate_s += other.translate_s;
         self.heuristic_s += other.heuristic_s;
@@ -101,6 +115,41 @@ pub struct RunRecord {
 }
 
 impl RunRecord {
+    /// `cell`'s record before its run: no outcome, no times, nothing found.
+    pub fn blank(cell: &Cell) -> RunRecord {
+        RunRecord {
+            id: cell.id(),
+            conditions: cell.conditions.clone(),
+            level: cell.level.name(),
+            planner: cell.planner.name().to_string(),
+            time_limit_s: cell.time_limit.as_secs_f64(),
+            repeat: cell.repeat,
+            prio: 0,
+            operators: 0,
+            outcome: String::new(),
+            times: Times::default(),
+            expansions: None,
+            generated: None,
+            cost: None,
+            length: None,
+            peak_memory_kb: None,
+            executed: None,
+            plan: Vec::new(),
+            widening: Vec::new(),
+            error: None,
+        }
+    }
+
+    /// The record of a cell that could not be computed (its process crashed, say):
+    /// outcome `error`, with why.
+    pub fn failed(cell: &Cell, message: String) -> RunRecord {
+        RunRecord {
+            outcome: "error".to_string(),
+            error: Some(message),
+            ..RunRecord::blank(cell)
+        }
+    }
+
     /// Whether a plan was found.
     pub fn solved(&self) -> bool {
         self.outcome == "solved"

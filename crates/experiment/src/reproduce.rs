@@ -17,7 +17,7 @@ use crate::lab::{tower_problem, towers, Lab};
 use crate::output::{condition_fields, create_dir, machine, opt, write_file, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
-use crate::{run_cells, ExperimentError, Progress};
+use crate::{run_cell, run_cells, CellCommand, ExperimentError, Progress, Runner};
 
 /// What `reproduce` runs.
 #[derive(Debug, Clone)]
@@ -40,6 +40,9 @@ pub struct ReproduceOptions {
     pub hands: usize,
     /// How to measure demoplan's peak heap per run.
     pub memory: Option<MemoryProbe>,
+    /// Run the cells in child processes, several at a time; `None` runs them here,
+    /// one after another.
+    pub children: Option<CellCommand>,
 }
 
 /// What `reproduce` did.
@@ -55,6 +58,65 @@ pub struct Reproduction {
     pub failed_executions: usize,
     /// The report page.
     pub report: PathBuf,
+}
+
+/// The grid: every planner x level (of `prios`) x goal x repeat, then Algorithm 1 per
+/// planner and goal (its widening gives ratio_alg1).
+fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
+    let mut planners = Planner::DEMOPLAN.to_vec();
+    if options.fast_downward.is_some() {
+        planners.extend(Planner::DEMOPLAN.map(Planner::with_fast_downward));
+    }
+    let mut cells = Vec::new();
+    for &planner in &planners {
+        for &prio in prios {
+            for &g in &options.goals {
+                for repeat in 0..options.repeat {
+                    cells.push(Cell {
+                        conditions: Conditions::paper_goal(options.seed, g, options.hands),
+                        level: LevelChoice::Prio(prio),
+                        planner,
+                        time_limit: options.time_limit,
+                        repeat,
+                    });
+                }
+            }
+        }
+        for &g in &options.goals {
+            cells.push(Cell {
+                conditions: Conditions::paper_goal(options.seed, g, options.hands),
+                level: LevelChoice::Algorithm1,
+                planner,
+                time_limit: options.time_limit,
+                repeat: 0,
+            });
+        }
+    }
+    cells
+}
+
+/// Computes one cell of the reproduction, by id, in this process: what each child
+/// process of a reproduction run with [`ReproduceOptions::children`] does.
+pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    let mut lab = Lab::new(
+        simulate::SimParams::default(),
+        options.fast_downward.clone(),
+        options.memory,
+    );
+    let base = Conditions::paper_goal(options.seed, 1, options.hands);
+    let library = lab.library(&base)?.clone();
+    let prios: Vec<usize> = levels(&library, DomainOptions::default())
+        .iter()
+        .map(|l| l.prio)
+        .filter(|p| {
+            options
+                .prios
+                .as_ref()
+                .is_none_or(|chosen| chosen.contains(p))
+        })
+        .collect();
+    let cells = reproduce_grid(options, &prios);
+    run_cell(&mut lab, &cells, id, &options.out.join("results.jsonl"))
 }
 
 /// The paper's goal of a record (its tower's height less one).
@@ -146,37 +208,8 @@ pub fn reproduce(
         problems.push((g, tower, p));
     }
 
-    // The grid: every planner x level x goal x repeat, then Algorithm 1 per planner and
-    // goal (its widening gives ratio_alg1).
-    let mut planners = Planner::DEMOPLAN.to_vec();
-    if options.fast_downward.is_some() {
-        planners.extend(Planner::DEMOPLAN.map(Planner::with_fast_downward));
-    }
-    let mut cells = Vec::new();
-    for &planner in &planners {
-        for l in &chosen {
-            for &g in &options.goals {
-                for repeat in 0..options.repeat {
-                    cells.push(Cell {
-                        conditions: Conditions::paper_goal(options.seed, g, options.hands),
-                        level: LevelChoice::Prio(l.prio),
-                        planner,
-                        time_limit: options.time_limit,
-                        repeat,
-                    });
-                }
-            }
-        }
-        for &g in &options.goals {
-            cells.push(Cell {
-                conditions: Conditions::paper_goal(options.seed, g, options.hands),
-                level: LevelChoice::Algorithm1,
-                planner,
-                time_limit: options.time_limit,
-                repeat: 0,
-            });
-        }
-    }
+    let prios: Vec<usize> = chosen.iter().map(|l| l.prio).collect();
+    let cells = reproduce_grid(options, &prios);
     let describe = |c: &Cell| {
         format!(
             "{} {} goal {}",
@@ -185,7 +218,15 @@ pub fn reproduce(
             c.conditions.height - 1
         )
     };
-    let records = run_cells(&mut lab, &cells, &[], None, progress, &describe)?;
+    // A reproduction starts afresh; its results file grows as cells finish, so that
+    // child processes find the runs Algorithm 1 reuses.
+    let results = out.join("results.jsonl");
+    write_text(&results, "")?;
+    let runner = match &options.children {
+        Some(command) => Runner::Children(command),
+        None => Runner::InProcess(&mut lab),
+    };
+    let records = run_cells(runner, &cells, &[], Some(&results), progress, &describe)?;
 
     // Results.
     for r in records.iter().filter(|r| r.solved() && r.repeat == 0) {

@@ -20,7 +20,7 @@ use crate::output::{condition_fields, create_dir, machine, write_file, write_tex
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
 use crate::record::{read_records_for_append, RunRecord};
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
-use crate::{run_cells, ExperimentError, Progress};
+use crate::{run_cell, run_cells, CellCommand, ExperimentError, Progress, Runner};
 
 /// The most cubes a scene may hold (the cube world's table has room for them).
 pub const MAX_CUBES: usize = 24;
@@ -44,6 +44,9 @@ pub struct StudyOptions {
     pub time_limit: Duration,
     pub fast_downward: Option<FastDownward>,
     pub memory: Option<MemoryProbe>,
+    /// Run the cells in child processes, several at a time; `None` runs them here,
+    /// one after another.
+    pub children: Option<CellCommand>,
 }
 
 /// What a study did.
@@ -203,7 +206,11 @@ pub fn study(
             c.level.name()
         )
     };
-    let records = run_cells(&mut lab, &cells, &done, Some(&results), progress, &describe)?;
+    let runner = match &options.children {
+        Some(command) => Runner::Children(command),
+        None => Runner::InProcess(&mut lab),
+    };
+    let records = run_cells(runner, &cells, &done, Some(&results), progress, &describe)?;
 
     write_text(&out.join("study.json"), &study_json(options, cells.len()))?;
     let mut runs = format!("{RUNS_HEADER},levels_tried\n");
@@ -240,6 +247,20 @@ pub fn study(
     })
 }
 
+/// Computes one cell of the study, by id, in this process: what each child process of
+/// a study run with [`StudyOptions::children`] does. Algorithm 1 cells reuse the runs
+/// already in the study's results.
+pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    options.check()?;
+    let cells = study_grid(options);
+    let mut lab = Lab::new(
+        options.params.clone(),
+        options.fast_downward.clone(),
+        options.memory,
+    );
+    run_cell(&mut lab, &cells, id, &options.out.join("results.jsonl"))
+}
+
 fn study_json(options: &StudyOptions, cells: usize) -> String {
     let value = serde_json::json!({
         "format": "demoplan-study",
@@ -258,6 +279,7 @@ fn study_json(options: &StudyOptions, cells: usize) -> String {
         "time_limit_s": options.time_limit.as_secs_f64(),
         "with_fd": options.fast_downward.is_some(),
         "cells": cells,
+        "jobs": options.children.as_ref().map_or(1, |c| c.jobs),
         "machine": machine(),
     });
     let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();

@@ -42,6 +42,34 @@ pub fn fast_downward(
         .map_err(|e| Failure::plain(ExitCode::USAGE, e))
 }
 
+/// With `jobs` above 1, how the grid's cells run in child processes: this program
+/// again, with this command line and `--cell ID`.
+pub fn cell_command(jobs: usize) -> Result<Option<experiment::CellCommand>, Failure> {
+    if jobs <= 1 {
+        return Ok(None);
+    }
+    let program = std::env::current_exe().map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!("-j {jobs}: cannot find this program to run its cells: {e}"),
+        )
+    })?;
+    Ok(Some(experiment::CellCommand {
+        program,
+        args: std::env::args_os().skip(1).collect(),
+        jobs,
+    }))
+}
+
+/// A child process's cell record on standard output, as [`experiment::CellCommand`]
+/// reads it.
+pub fn print_cell(
+    record: Result<experiment::RunRecord, experiment::ExperimentError>,
+) -> Result<ExitCode, Failure> {
+    println!("{}", record.map_err(experiment_failure)?.to_json_line());
+    Ok(ExitCode::SUCCESS)
+}
+
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
     let options = experiment::ReproduceOptions {
@@ -54,7 +82,11 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         seed: args.seed,
         hands: args.hands as usize,
         memory: Some(crate::memory::probe()),
+        children: cell_command(args.jobs as usize)?,
     };
+    if let Some(id) = &args.cell {
+        return print_cell(experiment::reproduce_cell(&options, id));
+    }
     let bar = Bar::new();
     let result = experiment::reproduce(&options, &mut |p| bar.update(p));
     bar.finish();

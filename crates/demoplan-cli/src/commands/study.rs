@@ -3,7 +3,9 @@
 //! to an exit code.
 
 use crate::cli::StudyArgs;
-use crate::commands::reproduce::{experiment_failure, fast_downward, time_limit};
+use crate::commands::reproduce::{
+    cell_command, experiment_failure, fast_downward, print_cell, time_limit,
+};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
@@ -86,14 +88,26 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         time_limit: time_limit(&args.time_limit)?,
         fast_downward: fast_downward(args.with_fd, args.fd.as_deref())?,
         memory: Some(crate::memory::probe()),
+        children: None,
+    };
+    if let Some(id) = &args.cell {
+        return print_cell(experiment::study_cell(&options, id));
+    }
+    let jobs = match args.jobs {
+        Some(n) => n as usize,
+        None => std::thread::available_parallelism().map_or(1, usize::from),
+    };
+    let options = experiment::StudyOptions {
+        children: cell_command(jobs)?,
+        ..options
     };
     let bar = Bar::new();
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();
     let done = result.map_err(experiment_failure)?;
     println!(
-        "Study: {} runs ({} computed now, {} from earlier results) in {:.0} s; {} plan(s) \
-         failed the execution check. Wrote {}: open {}",
+        "Study: {} runs ({} computed now, {} from earlier results, {jobs} at a time) in \
+         {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}",
         done.records.len(),
         done.computed,
         done.records.len() - done.computed,

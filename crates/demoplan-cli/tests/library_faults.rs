@@ -752,8 +752,20 @@ fn a_learner_killed_at_its_rename_leaves_the_old_library() {
         .status()
         .unwrap();
     assert!(killed.success());
+    // A traced process stays stopped until its tracer lets it go: strace would hold it
+    // for the rest of the delay. Killing strace detaches it, and the pending SIGKILL
+    // ends it before the rename runs (the kernel skips a system call entered with a
+    // fatal signal pending).
+    strace.kill().unwrap();
     let status = strace.wait().unwrap();
-    assert!(!status.success(), "the learner was killed: {status}");
+    assert!(!status.success(), "strace was killed: {status}");
+    while std::fs::metadata(format!("/proc/{pid}/syscall")).is_ok()
+        && !std::fs::read_to_string(format!("/proc/{pid}/stat"))
+            .unwrap_or_default()
+            .contains(") Z")
+    {
+        std::thread::sleep(Duration::from_millis(5));
+    }
     assert!(
         std::fs::read(&library).unwrap() == old,
         "the library changed"

@@ -57,7 +57,9 @@ fn every_target_has_a_committed_corpus() {
             + inputs(&fuzz.join("corpus").join(target));
         assert!(count > 0, "{target} has no committed inputs to start from");
         assert!(
-            fuzz.join("fuzz_targets").join(format!("{target}.rs")).is_file(),
+            fuzz.join("fuzz_targets")
+                .join(format!("{target}.rs"))
+                .is_file(),
             "fuzz/fuzz_targets/{target}.rs is missing"
         );
     }

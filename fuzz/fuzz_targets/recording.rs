@@ -1,12 +1,9 @@
-//! The recording reader over arbitrary bytes: the header, then every frame.
+//! The recording reader over any bytes: the header, then every frame.
+//!
+//! The check is `fuzz_checks::recording`, shared with the replay of old crashes
+//! (`crates/fuzz-checks/tests/replay.rs`).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|data: &[u8]| {
-    let Ok(mut reader) = recording::Reader::new(data) else {
-        return;
-    };
-    let mut frame = recording::Frame::default();
-    while let Ok(true) = reader.read_frame(&mut frame) {}
-});
+fuzz_target!(|data: &[u8]| fuzz_checks::recording(data));

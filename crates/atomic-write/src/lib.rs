@@ -26,15 +26,18 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// A file that could not be written; the target is unchanged and no temporary file is
-/// left behind.
+/// left behind. The message says which: `cannot write PATH: WHAT; it is unchanged` when
+/// there was a file, `...; nothing was written` when there was none.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot write {}: {source}", path.display())]
+#[error("cannot write {}: {source}; {}", path.display(), if *replaced { "it is unchanged" } else { "nothing was written" })]
 pub struct WriteError {
     /// The file that was to be written.
     pub path: PathBuf,
     /// What failed.
     #[source]
     pub source: std::io::Error,
+    /// Whether a file was there to replace (and so is still there, unchanged).
+    pub replaced: bool,
 }
 
 /// Writes `contents` through a temporary file in the same folder and a rename, so that a
@@ -85,14 +88,20 @@ fn write_via_temporary(
 ) -> Result<(), WriteError> {
     let (dir, name) = folder_and_name(path);
     let tmp = dir.join(format!("{}{}", temporary_prefix(&name), std::process::id()));
+    // The file replaced keeps its permission bits (a group-writable library stays so).
+    let replaced = std::fs::metadata(path).ok().filter(|m| m.is_file());
     let fail = |source: std::io::Error| {
         let _ = std::fs::remove_file(&tmp);
         WriteError {
             path: path.to_path_buf(),
             source,
+            replaced: replaced.is_some(),
         }
     };
     let file = File::create(&tmp).map_err(fail)?;
+    if let Some(old) = &replaced {
+        file.set_permissions(old.permissions()).map_err(fail)?;
+    }
     let mut out = std::io::BufWriter::with_capacity(1 << 20, file);
     produce(&mut out).map_err(fail)?;
     let file = out.into_inner().map_err(|e| fail(e.into_error()))?;
@@ -198,7 +207,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(
             e.to_string(),
-            format!("cannot write {}: disk full", path.display())
+            format!("cannot write {}: disk full; it is unchanged", path.display())
         );
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
         assert_eq!(entries(&dir), ["out.txt"]);
@@ -206,6 +215,21 @@ mod tests {
         let missing = dir.join("no-such-folder").join("out.txt");
         let e = write_atomically(&missing, "x").unwrap_err();
         assert_eq!(e.path, missing);
+        assert!(e.to_string().ends_with("; nothing was written"), "{e}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    #[cfg(unix)]
+    fn a_replaced_file_keeps_its_permission_bits() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = folder("permissions");
+        let path = dir.join("library.json");
+        write_atomically(&path, "{}").unwrap();
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o664)).unwrap();
+        write_durably(&path, "{\"v\": 2}").unwrap();
+        let mode = std::fs::metadata(&path).unwrap().permissions().mode();
+        assert_eq!(mode & 0o777, 0o664);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 

@@ -77,7 +77,8 @@ impl<'a> Cursor<'a> {
     }
 
     fn remaining(&self) -> usize {
-        self.data.len() - self.pos
+        // `pos` only moves by `take`, which stays within the data.
+        self.data.len().saturating_sub(self.pos)
     }
 
     fn take(&mut self, n: usize) -> Result<&'a [u8], DecodeError> {
@@ -87,16 +88,22 @@ impl<'a> Cursor<'a> {
                 self.remaining()
             )));
         }
-        let out = &self.data[self.pos..self.pos + n];
-        self.pos += n;
+        let end = self.pos.saturating_add(n);
+        let out = &self.data[self.pos..end];
+        self.pos = end;
         Ok(out)
     }
 
     fn align(&mut self, n: usize) -> Result<(), DecodeError> {
         if self.cdr && n > 1 {
-            let offset = (self.pos - self.base) % n;
+            // `n` is a primitive's size (2, 4 or 8), `base` at most `pos`.
+            let offset = self
+                .pos
+                .saturating_sub(self.base)
+                .checked_rem(n)
+                .unwrap_or(0);
             if offset != 0 {
-                self.take(n - offset)?;
+                self.take(n.saturating_sub(offset))?;
             }
         }
         Ok(())
@@ -189,7 +196,7 @@ impl<'a> Cursor<'a> {
         depth: usize,
     ) -> Result<Value, DecodeError> {
         let primitive = match element {
-            ElementType::Message(id) => return self.message(schema, id, depth + 1),
+            ElementType::Message(id) => return self.message(schema, id, depth.saturating_add(1)),
             ElementType::Primitive(primitive) => primitive,
         };
         Ok(match primitive {
@@ -221,12 +228,13 @@ impl<'a> Cursor<'a> {
             Primitive::Time => {
                 let sec = self.u32()? as i64;
                 let nsec = self.u32()? as i64;
-                Value::Time(sec * 1_000_000_000 + nsec)
+                // Seconds of 32 bits times 10^9 fit i64.
+                Value::Time(sec.saturating_mul(1_000_000_000).saturating_add(nsec))
             }
             Primitive::Duration => {
                 let sec = i32::from_le_bytes(self.fixed::<4>()?) as i64;
                 let nsec = i32::from_le_bytes(self.fixed::<4>()?) as i64;
-                Value::Duration(sec * 1_000_000_000 + nsec)
+                Value::Duration(sec.saturating_mul(1_000_000_000).saturating_add(nsec))
             }
         })
     }
@@ -242,6 +250,7 @@ fn min_size(element: ElementType) -> usize {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

@@ -134,7 +134,7 @@ impl Schema {
         // Split into sections: (type name, first line number, lines).
         let mut sections: Vec<(String, Vec<(usize, &str)>)> = vec![(root_name.clone(), Vec::new())];
         for (index, line) in text.lines().enumerate() {
-            let number = index + 1;
+            let number = index.saturating_add(1);
             let trimmed = line.trim();
             if trimmed.len() >= 3 && trimmed.bytes().all(|b| b == b'=') {
                 sections.push((String::new(), Vec::new()));
@@ -247,7 +247,7 @@ pub(crate) fn path_segments(path: &str) -> Result<Vec<PathSegment<'_>>, String> 
     for part in path.split('.') {
         let (name, index) = match part.find('[') {
             Some(open) => {
-                let Some(inner) = part[open + 1..].strip_suffix(']') else {
+                let Some(inner) = part[open.saturating_add(1)..].strip_suffix(']') else {
                     return Err(format!("`{part}`: an index is `[]` or `[N]`"));
                 };
                 let position = if inner.is_empty() {
@@ -327,7 +327,13 @@ impl Builder<'_> {
             },
         };
         let package = name.split('/').next().unwrap_or("").to_string();
-        let id = TypeId(self.types.len() as u32);
+        let Ok(index) = u32::try_from(self.types.len()) else {
+            return Err(DefinitionError {
+                line,
+                what: format!("more than {} message types", u32::MAX),
+            });
+        };
+        let id = TypeId(index);
         // Reserve the slot first so that a type using itself is caught by the depth limit
         // rather than compiled twice.
         self.types.push(MessageType {
@@ -404,7 +410,7 @@ impl Builder<'_> {
         }
         let (base, arity) = match type_token.find('[') {
             Some(open) => {
-                let Some(inner) = type_token[open + 1..].strip_suffix(']') else {
+                let Some(inner) = type_token[open.saturating_add(1)..].strip_suffix(']') else {
                     return Err(err(format!(
                         "`{type_token}`: an array type is `T[]`, `T[N]` or `T[<=N]`"
                     )));
@@ -435,7 +441,7 @@ impl Builder<'_> {
                 } else {
                     format!("{package}/{base}")
                 };
-                ElementType::Message(self.compile(&full, number, depth + 1)?)
+                ElementType::Message(self.compile(&full, number, depth.saturating_add(1))?)
             }
         };
         Ok(Some(Field {
@@ -457,6 +463,7 @@ fn builtin_definition(name: &str) -> Option<&'static str> {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

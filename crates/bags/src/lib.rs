@@ -22,6 +22,11 @@
 //! largest chunk (ROS 1) or record (MCAP), never by the file. Every problem is a
 //! [`BagError`] naming the file and a byte offset, or the topic, message and field.
 
+// A reader of untrusted input, every module of it (issue 23): no arithmetic that can wrap
+// or panic, no cast that can truncate; each such operation is checked, saturating or
+// proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 mod counting;
 mod decode;
 pub mod definition;
@@ -44,6 +49,13 @@ pub use value::{Message as MessageValue, Value};
 /// 768 KiB (`rosbag record`), 1 MiB (rosbags) or a few MiB (MCAP writers); a chunk or
 /// record claiming more than this is taken for corrupt rather than allocated.
 pub const MAX_RECORD: u64 = 256 << 20;
+
+/// Largest message decoded, in bytes of its serialization: 16 MiB. The topics an import
+/// reads (`/tf`, poses, object lists) carry a few kilobytes per message, and a decoded
+/// [`Value`] tree takes several times its bytes, so a larger message of a wanted topic is
+/// an error ([`BagError::MessageTooLarge`]) naming its topic and index. Messages of other
+/// topics (camera images, point clouds) are skipped undecoded, whatever their size.
+pub const MAX_MESSAGE: u64 = 16 << 20;
 
 /// Something wrong with a bag: always the file, and where in it.
 #[derive(Debug, thiserror::Error)]
@@ -79,6 +91,15 @@ pub enum BagError {
         #[source]
         source: DefinitionError,
     },
+    #[error("{}: topic {topic}: message {index} (byte {offset} of the file) has {size} bytes, more than the {MAX_MESSAGE} a decoded message may have", path.display())]
+    MessageTooLarge {
+        path: PathBuf,
+        topic: String,
+        /// Position of the message among its topic's messages, from 0.
+        index: u64,
+        offset: u64,
+        size: u64,
+    },
     #[error("{}: topic {topic}: message {index} (byte {offset} of the file): {source}", path.display())]
     Decode {
         path: PathBuf,
@@ -111,6 +132,7 @@ impl BagError {
             | BagError::Corrupt { path, .. }
             | BagError::UnknownCompression { path, .. }
             | BagError::Definition { path, .. }
+            | BagError::MessageTooLarge { path, .. }
             | BagError::Decode { path, .. } => path,
         }
     }
@@ -314,7 +336,7 @@ impl Bag {
                     path: path.clone(),
                     source,
                 })?;
-                Ok(sum + meta.len())
+                Ok(sum.saturating_add(meta.len()))
             }),
         }
     }
@@ -336,7 +358,7 @@ impl Bag {
                 message_count: Some(0),
                 ..topic.clone()
             });
-            entry.message_count = Some(entry.message_count.unwrap_or(0) + count);
+            entry.message_count = Some(entry.message_count.unwrap_or(0).saturating_add(count));
         };
         let mut counted = false;
         if self.format == Format::Ros1 {
@@ -363,7 +385,7 @@ impl Bag {
                     message_count: Some(0),
                     ..topic.clone()
                 });
-                entry.message_count = Some(entry.message_count.unwrap_or(0) + 1);
+                entry.message_count = Some(entry.message_count.unwrap_or(0).saturating_add(1));
             }
         }
         Ok(topics.into_values().collect())
@@ -526,7 +548,7 @@ impl Messages {
                 )
             });
             let index = entry.0;
-            entry.0 += 1;
+            entry.0 = entry.0.saturating_add(1);
             let (topic_name, type_name) = (entry.1.clone(), entry.2.clone());
             let path = || self.source.path();
             let schema = match &raw.connection.schema {
@@ -540,6 +562,16 @@ impl Messages {
                     })
                 }
             };
+            let size = raw.data.len() as u64;
+            if size > MAX_MESSAGE {
+                return Err(BagError::MessageTooLarge {
+                    path: path(),
+                    topic: topic.name.clone(),
+                    index,
+                    offset: raw.offset,
+                    size,
+                });
+            }
             let value =
                 decode(&schema, topic.encoding, &raw.data).map_err(|source| BagError::Decode {
                     path: path(),

@@ -39,7 +39,9 @@ impl McapReader {
             // CRCs are checked so that a damaged uncompressed chunk is an error.
             reader: LinearReader::new_with_options(
                 LinearReaderOptions::default()
-                    .with_record_length_limit(crate::MAX_RECORD as usize)
+                    .with_record_length_limit(
+                        usize::try_from(crate::MAX_RECORD).unwrap_or(usize::MAX),
+                    )
                     .with_validate_chunk_crcs(true),
             ),
             consumed: 0,
@@ -90,7 +92,7 @@ impl McapReader {
                         }
                     };
                     self.reader.notify_read(read);
-                    self.consumed += read as u64;
+                    self.consumed = self.consumed.saturating_add(read as u64);
                     continue;
                 }
                 Ok(LinearReadEvent::Record { opcode, data }) => {

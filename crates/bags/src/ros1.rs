@@ -61,7 +61,7 @@ impl<'a> Fields<'a> {
             };
             let name = std::str::from_utf8(&field[..eq])
                 .map_err(|_| "a header field name is not UTF-8".to_string())?;
-            out.push((name, &field[eq + 1..]));
+            out.push((name, &field[eq.saturating_add(1)..]));
         }
         Ok(Fields(out))
     }
@@ -108,7 +108,11 @@ impl<'a> Fields<'a> {
     /// A ROS 1 `time` field: seconds then nanoseconds, as nanoseconds.
     fn time(&self, name: &str) -> Result<i64, String> {
         let t = self.u64(name)?;
-        Ok((t & 0xffff_ffff) as i64 * 1_000_000_000 + (t >> 32) as i64)
+        // Both halves are 32-bit: seconds times 10^9 plus nanoseconds fits i64 for any
+        // u32 of seconds (below 4.3 * 10^18).
+        let half = |x: u64| i64::from(u32::try_from(x & 0xffff_ffff).unwrap_or(u32::MAX));
+        let (seconds, nanos) = (half(t), half(t >> 32));
+        Ok(seconds.saturating_mul(1_000_000_000).saturating_add(nanos))
     }
 }
 
@@ -215,7 +219,7 @@ impl Ros1Reader {
         reader.index_pos = file_len;
         reader.seek(index_pos)?;
         let mut counts: HashMap<u32, u64> = HashMap::new();
-        let mut chunk_infos = 0;
+        let mut chunk_infos = 0u64;
         let mut connections = HashMap::new();
         while reader.pos < file_len {
             let offset = reader.pos;
@@ -227,7 +231,7 @@ impl Ros1Reader {
                     connections.insert(id, connection);
                 }
                 OP_CHUNK_INFO => {
-                    chunk_infos += 1;
+                    chunk_infos = chunk_infos.saturating_add(1);
                     if data.len() % 8 != 0 {
                         return Err(reader.corrupt(
                             offset,
@@ -237,7 +241,8 @@ impl Ros1Reader {
                     for pair in data.chunks_exact(8) {
                         let conn = u32::from_le_bytes([pair[0], pair[1], pair[2], pair[3]]);
                         let count = u32::from_le_bytes([pair[4], pair[5], pair[6], pair[7]]);
-                        *counts.entry(conn).or_default() += count as u64;
+                        let total = counts.entry(conn).or_default();
+                        *total = total.saturating_add(u64::from(count));
                     }
                 }
                 _ => {}
@@ -281,7 +286,7 @@ impl Ros1Reader {
     fn read_exact(&mut self, buf: &mut [u8], what: &str) -> Result<(), BagError> {
         match self.file.read_exact(buf) {
             Ok(()) => {
-                self.pos += buf.len() as u64;
+                self.pos = self.pos.saturating_add(buf.len() as u64);
                 Ok(())
             }
             Err(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => {
@@ -314,7 +319,9 @@ impl Ros1Reader {
                 format!("{what} of {n} bytes is larger than the {max} accepted"),
             ));
         }
-        Ok(n as usize)
+        // At most `max`, itself at most `MAX_RECORD` (256 MiB): fits usize.
+        usize::try_from(n)
+            .map_err(|_| self.corrupt(at, format!("{what} of {n} bytes does not fit in memory")))
     }
 
     /// The record at `self.pos`: its header and data, both read.
@@ -486,31 +493,36 @@ impl Ros1Reader {
 
 /// Splits the record at `at` of a chunk into header, data and where the next one starts.
 fn split_record(chunk: &[u8], at: usize) -> Result<(&[u8], &[u8], usize), String> {
+    // Every position below is at most the chunk's length: checked before it is made.
     let take_len = |pos: usize| -> Result<(usize, usize), String> {
-        let Some(b) = chunk.get(pos..pos + 4) else {
+        let start = pos.saturating_add(4);
+        let Some(b) = chunk.get(pos..start) else {
             return Err("truncated: the chunk ends inside a length".into());
         };
         let n = u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as usize;
-        if n > chunk.len() - pos - 4 {
+        let left = chunk.len().saturating_sub(start);
+        if n > left {
             return Err(format!(
-                "truncated: a length of {n} bytes, but the chunk has {} left",
-                chunk.len() - pos - 4
+                "truncated: a length of {n} bytes, but the chunk has {left} left"
             ));
         }
-        Ok((n, pos + 4))
+        Ok((n, start))
     };
     let (header_len, header_at) = take_len(at)?;
-    let (data_len, data_at) = take_len(header_at + header_len)?;
+    let header_end = header_at.saturating_add(header_len);
+    let (data_len, data_at) = take_len(header_end)?;
+    let data_end = data_at.saturating_add(data_len);
     Ok((
-        &chunk[header_at..header_at + header_len],
-        &chunk[data_at..data_at + data_len],
-        data_at + data_len,
+        &chunk[header_at..header_end],
+        &chunk[data_at..data_end],
+        data_end,
     ))
 }
 
 /// Decompresses into `out`, refusing more than `size` bytes.
 fn read_bounded(decoder: impl Read, size: u64, out: &mut Vec<u8>) -> std::io::Result<()> {
-    out.reserve(size as usize);
-    decoder.take(size + 1).read_to_end(out)?;
+    // `size` is at most `MAX_CHUNK` (checked by the caller): a hint that fits usize.
+    out.reserve(usize::try_from(size).unwrap_or(0));
+    decoder.take(size.saturating_add(1)).read_to_end(out)?;
     Ok(())
 }

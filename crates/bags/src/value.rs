@@ -78,8 +78,13 @@ impl Value {
         match self {
             Value::Time(t) | Value::Duration(t) => Some(*t),
             Value::Message(m) => {
-                let sec = m.field("sec").or_else(|| m.field("secs"))?.as_f64()? as i64;
-                let nsec = m.field("nanosec").or_else(|| m.field("nsecs"))?.as_f64()? as i64;
+                // A float to integer cast saturates (NaN gives 0): a stamp out of range
+                // becomes the nearest `i64`, never a wrapped one.
+                #[allow(clippy::cast_possible_truncation)]
+                let (sec, nsec) = (
+                    m.field("sec").or_else(|| m.field("secs"))?.as_f64()? as i64,
+                    m.field("nanosec").or_else(|| m.field("nsecs"))?.as_f64()? as i64,
+                );
                 Some(sec.saturating_mul(1_000_000_000).saturating_add(nsec))
             }
             _ => None,

@@ -404,3 +404,65 @@ fn flipped_bytes_give_errors_or_messages_never_a_panic() {
         }
     }
 }
+
+/// An MCAP file of one `ros2msg` topic, `/big`, with messages of `sizes` bytes (a
+/// `uint8[]` in CDR), written by the `mcap` crate's writer.
+fn mcap_with_messages(sizes: &[usize]) -> Vec<u8> {
+    let mut out = std::io::Cursor::new(Vec::new());
+    let mut writer = mcap::Writer::new(&mut out).unwrap();
+    let schema = writer
+        .add_schema("test_msgs/msg/Blob", "ros2msg", b"uint8[] data")
+        .unwrap();
+    let channel = writer
+        .add_channel(schema, "/big", "cdr", &Default::default())
+        .unwrap();
+    for (i, &size) in sizes.iter().enumerate() {
+        // CDR: the encapsulation header (little endian), the length, the bytes.
+        let mut data = vec![0, 1, 0, 0];
+        data.extend_from_slice(&u32::try_from(size - 8).unwrap().to_le_bytes());
+        data.resize(size, 7);
+        let header = mcap::records::MessageHeader {
+            channel_id: channel,
+            sequence: u32::try_from(i).unwrap(),
+            log_time: 1_000 * i as u64,
+            publish_time: 1_000 * i as u64,
+        };
+        writer.write_to_known_channel(&header, &data).unwrap();
+    }
+    writer.finish().unwrap();
+    drop(writer);
+    out.into_inner()
+}
+
+/// A message of a wanted topic over `MAX_MESSAGE` is an error naming its topic and
+/// index (it would decode into a tree several times its size); one at the limit decodes,
+/// and a large message of a topic nobody wants is skipped.
+#[test]
+fn a_message_over_the_maximum_size_is_an_error_naming_it() {
+    let max = usize::try_from(bags::MAX_MESSAGE).unwrap();
+    let bytes = mcap_with_messages(&[100, max, max + 1]);
+    let bag = bags::from_bytes(Path::new("big.mcap"), bytes).unwrap();
+    let mut messages = bag.messages(|_| true).unwrap();
+    assert_eq!(messages.next().unwrap().unwrap().index, 0);
+    assert_eq!(messages.next().unwrap().unwrap().index, 1);
+    let err = messages.next().unwrap().unwrap_err();
+    assert!(
+        matches!(err, BagError::MessageTooLarge { index: 2, .. }),
+        "{err:?}"
+    );
+    let text = err.to_string();
+    assert!(
+        text.starts_with("big.mcap: topic /big: message 2 (byte "),
+        "{text}"
+    );
+    assert!(
+        text.ends_with(&format!(
+            "has {} bytes, more than the 16777216 a decoded message may have",
+            max + 1
+        )),
+        "{text}"
+    );
+    assert!(messages.next().is_none());
+    let skipped = bag.messages(|topic| topic != "/big").unwrap();
+    assert_eq!(skipped.count(), 0);
+}

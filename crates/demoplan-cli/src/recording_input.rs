@@ -227,7 +227,9 @@ fn read_line(path: &Path, n: u64) -> Option<String> {
     let mut buf = Vec::new();
     for _ in 0..n {
         buf.clear();
-        if input.read_until(b'\n', &mut buf).ok()? == 0 {
+        // No more than the reader takes: a line it refused as too long is shown cut.
+        let most = recording::MAX_LINE_BYTES as u64 + 2;
+        if (&mut input).take(most).read_until(b'\n', &mut buf).ok()? == 0 {
             return Some(String::new());
         }
     }

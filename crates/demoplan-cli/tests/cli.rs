@@ -2535,3 +2535,49 @@ fn one_mapping_file_serves_classify_and_the_unity_commands() {
     assert_eq!(segment.status.code(), Some(0), "{}", transcript(&segment));
     assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
 }
+
+/// A header of `n` cubes, one line (issue 23).
+fn header_of_cubes(n: usize) -> String {
+    let cubes: Vec<String> = (0..n)
+        .map(|i| format!(r#"{{"name":"c{i}","kind":"cube","size":[0.05,0.05,0.05]}}"#))
+        .collect();
+    format!(
+        r#"{{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":90,"entities":[{}]}}"#,
+        cubes.join(",")
+    )
+}
+
+/// Issue 23: `grounding` indexes objects in 16 bits, so a recording of 65,535 entities
+/// or more is refused when it is read, with exit 31 and its header's line and field
+/// named; a recording line over the documented maximum is refused the same way, by its
+/// line, without reading more of it than the maximum.
+#[test]
+fn recordings_over_the_entity_and_line_limits_exit_31_naming_where() {
+    let dir = tempdir("reader-limits");
+    let many = dir.join("many.jsonl");
+    std::fs::write(&many, format!("{}\n{{\"t\":0}}\n", header_of_cubes(65_535))).unwrap();
+    for command in ["inspect", "segment"] {
+        let out = demoplan().arg(command).arg(&many).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(31), "{command}: {stderr}");
+        assert!(stderr.contains("many.jsonl:1:"), "{command}: {stderr}");
+        assert!(stderr.contains("field `entities`"), "{command}: {stderr}");
+        assert!(
+            stderr.contains("65535 entities: a recording declares at most 65534"),
+            "{command}: {stderr}"
+        );
+    }
+    let long = dir.join("long.jsonl");
+    let mut text = format!("{}\n{{\"t\":0}}\n{{\"t\":1", header_of_cubes(2));
+    text.push_str(&" ".repeat(recording::MAX_LINE_BYTES));
+    text.push_str("}\n");
+    std::fs::write(&long, text).unwrap();
+    let out = demoplan().arg("inspect").arg(&long).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(31), "{stderr}");
+    assert!(stderr.contains("long.jsonl:3:"), "{stderr}");
+    assert!(
+        stderr.contains("the line is longer than 67108864 bytes"),
+        "{stderr}"
+    );
+}

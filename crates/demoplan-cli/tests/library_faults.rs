@@ -371,3 +371,415 @@ fn a_held_lock_makes_a_learner_wait_or_give_up() {
     let learned = learn::Library::from_json(&text).unwrap();
     assert_eq!(learned.recordings().count(), 2);
 }
+
+// ---------------------------------------------------------------------------------------
+// Issue 23: the lock of a library by any of its names, lock files of other users, and
+// writes that fail partway, injected from outside the process (a full tmpfs, a read-only
+// mount, strace's fault injection and delays). They need root (mounts, another user,
+// ptrace), which CI has; they do not skip.
+
+/// A learner adding `files` to `library` (`--library L -o L`), its output captured.
+fn add_to(library: &Path, files: &[PathBuf]) -> Command {
+    let mut cmd = demoplan();
+    cmd.arg("learn")
+        .args(files)
+        .arg("--library")
+        .arg(library)
+        .arg("-o")
+        .arg(library);
+    cmd
+}
+
+/// A library learned from the study's first recording, and the bytes it has once the
+/// second is added (learned on a copy): the old and the new library of the fault tests.
+fn old_and_new_library(dir: &Path) -> (PathBuf, Vec<u8>, Vec<u8>) {
+    let library = dir.join("library.json");
+    run(demoplan()
+        .arg("learn")
+        .arg(&study()[0])
+        .arg("-o")
+        .arg(&library));
+    let old = std::fs::read(&library).unwrap();
+    let copy = dir.join("copy.json");
+    std::fs::write(&copy, &old).unwrap();
+    run(&mut add_to(&copy, &study()[1..2]));
+    let new = std::fs::read(&copy).unwrap();
+    std::fs::remove_file(&copy).unwrap();
+    let _ = std::fs::remove_file(dir.join("copy.json.lock"));
+    assert_ne!(old, new);
+    (library, old, new)
+}
+
+fn assert_root(what: &str) {
+    // The effective uid, from the process's status file (no libc call needed).
+    let status = std::fs::read_to_string("/proc/self/status").unwrap();
+    let euid = status
+        .lines()
+        .find_map(|l| l.strip_prefix("Uid:"))
+        .and_then(|l| l.split_whitespace().nth(1))
+        .unwrap();
+    assert_eq!(
+        euid, "0",
+        "{what} needs root (mounts, another user, ptrace), as CI has; run the tests as root"
+    );
+}
+
+/// Two names of one library, a symlink and a relative path, share one lock: while the
+/// lock of the real file is held, a learner through the symlink and one through a
+/// relative path both wait and give up (75); once it is released, a learner through the
+/// symlink writes the real file, and the symlink stays a symlink.
+#[test]
+fn a_symlink_and_a_relative_path_to_a_library_share_its_lock() {
+    let dir = tempdir("two-names");
+    let real_dir = dir.join("real");
+    std::fs::create_dir_all(&real_dir).unwrap();
+    let (built, old, new) = old_and_new_library(&dir);
+    let library = real_dir.join("library.json");
+    std::fs::rename(&built, &library).unwrap();
+    let link = dir.join("link.json");
+    std::os::unix::fs::symlink(&library, &link).unwrap();
+
+    let lock = hold_lock(&library);
+    for (name, cwd) in [
+        (link.clone(), dir.clone()),
+        ("library.json".into(), real_dir.clone()),
+    ] {
+        let out = add_to(&name, &study()[1..2])
+            .current_dir(&cwd)
+            .args(["--lock-timeout", "0.2s"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(75), "{}: {stderr}", name.display());
+        assert!(stderr.contains("real/library.json.lock"), "{stderr}");
+        assert_eq!(std::fs::read(&library).unwrap(), old);
+    }
+    drop(lock);
+    run(&mut add_to(&link, &study()[1..2]));
+    assert_eq!(std::fs::read(&library).unwrap(), new);
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(!dir.join("link.json.lock").exists());
+}
+
+/// A lock file created by a learner gets the library's permission bits, and the library
+/// keeps its own when it is rewritten: a group-writable library stays lockable and
+/// writable by its group.
+#[test]
+fn the_lock_file_gets_the_library_permission_bits() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempdir("lock-mode");
+    let (library, _, new) = old_and_new_library(&dir);
+    let _ = std::fs::remove_file(dir.join("library.json.lock"));
+    std::fs::set_permissions(&library, std::fs::Permissions::from_mode(0o664)).unwrap();
+    run(&mut add_to(&library, &study()[1..2]));
+    assert_eq!(std::fs::read(&library).unwrap(), new);
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o7777;
+    assert_eq!(mode(&dir.join("library.json.lock")), 0o664);
+    assert_eq!(mode(&library), 0o664);
+}
+
+/// A learner that may write the library but not its lock file (another user created
+/// it, mode 0644) still takes the lock (`flock` on a read-only descriptor) and writes.
+/// The learner runs as `nobody` (uid 65534) on a library and folder it owns.
+#[test]
+fn a_learner_takes_a_lock_file_another_user_created() {
+    use std::os::unix::fs::PermissionsExt;
+    use std::os::unix::process::CommandExt;
+    assert_root("a_learner_takes_a_lock_file_another_user_created");
+    let dir = tempdir("other-user");
+    let (library, _, new) = old_and_new_library(&dir);
+    let lock = dir.join("library.json.lock");
+    std::fs::write(&lock, "1\n").unwrap(); // root's, 0644
+    std::fs::set_permissions(&lock, std::fs::Permissions::from_mode(0o644)).unwrap();
+    std::os::unix::fs::chown(&dir, Some(65534), Some(65534)).unwrap();
+    std::os::unix::fs::chown(&library, Some(65534), Some(65534)).unwrap();
+    let out = add_to(&library, &study()[1..2])
+        .uid(65534)
+        .gid(65534)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert_eq!(std::fs::read(&library).unwrap(), new);
+    let owner = |p: &Path| std::os::unix::fs::MetadataExt::uid(&std::fs::metadata(p).unwrap());
+    assert_eq!(owner(&lock), 0, "the lock file is still root's");
+    assert_eq!(owner(&library), 65534);
+}
+
+/// Runs `script` in a private mount namespace (`unshare --mount`), so that what it
+/// mounts vanishes with it, and returns its output. `DEMOPLAN`, `DIR` and `RECORDING`
+/// are set for it.
+fn in_mount_namespace(dir: &Path, script: &str) -> std::process::Output {
+    Command::new("unshare")
+        .args(["--mount", "--propagation", "private", "sh", "-euc", script])
+        .env("DEMOPLAN", env!("CARGO_BIN_EXE_demoplan"))
+        .env("DIR", dir)
+        .env("RECORDING", &study()[1])
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("unshare (util-linux) runs")
+}
+
+/// What a failed write left, read back from the files the scripts copy out: the
+/// learner's exit code and standard error, the library, the folder's names.
+struct Aftermath {
+    code: i32,
+    stderr: String,
+    library: Vec<u8>,
+    names: Vec<String>,
+}
+
+fn aftermath(dir: &Path, script_output: &std::process::Output) -> Aftermath {
+    let out = dir.join("out");
+    let read = |name: &str| {
+        std::fs::read(out.join(name)).unwrap_or_else(|e| {
+            panic!(
+                "{name} not copied out ({e}); the script said:\n{}",
+                String::from_utf8_lossy(&script_output.stderr)
+            )
+        })
+    };
+    let mut names: Vec<String> = String::from_utf8(read("names"))
+        .unwrap()
+        .lines()
+        .map(str::to_string)
+        .collect();
+    names.sort();
+    Aftermath {
+        code: String::from_utf8(read("code"))
+            .unwrap()
+            .trim()
+            .parse()
+            .unwrap(),
+        stderr: String::from_utf8(read("stderr")).unwrap(),
+        library: read("library.json"),
+        names,
+    }
+}
+
+/// The scripts' common part: a small tmpfs `disk` holding the library and its lock
+/// file (as a previous learner left them); `$1` is run between the setup and the
+/// learner; the learner's code, stderr, the library and the folder's names are copied
+/// to `out`.
+fn disk_script(size: &str, between: &str) -> String {
+    format!(
+        r#"
+mkdir -p "$DIR/disk" "$DIR/out"
+mount -t tmpfs -o size={size} demoplan-test "$DIR/disk"
+cp "$DIR/library.json" "$DIR/disk/library.json"
+echo 1 > "$DIR/disk/library.json.lock"
+{between}
+set +e
+"$DEMOPLAN" learn "$RECORDING" --library "$DIR/disk/library.json" -o "$DIR/disk/library.json" \
+    >/dev/null 2>"$DIR/out/stderr"
+echo $? > "$DIR/out/code"
+set -e
+cp "$DIR/disk/library.json" "$DIR/out/library.json"
+ls -A "$DIR/disk" > "$DIR/out/names"
+"#
+    )
+}
+
+/// A full disk (a tmpfs filled up): the write fails, the learner says why (exit 35,
+/// "No space left on device", the library unchanged), the old library is intact and no
+/// temporary file is left.
+#[test]
+fn a_full_disk_leaves_the_old_library_and_says_why() {
+    assert_root("a_full_disk_leaves_the_old_library_and_says_why");
+    let dir = tempdir("full-disk");
+    let (_, old, _) = old_and_new_library(&dir);
+    let script = disk_script(
+        "1m",
+        r#"cat /dev/zero > "$DIR/disk/filler" 2>/dev/null || true"#,
+    );
+    let output = in_mount_namespace(&dir, &script);
+    let after = aftermath(&dir, &output);
+    assert_eq!(after.code, 35, "{}", after.stderr);
+    assert!(
+        after.stderr.contains("No space left on device"),
+        "{}",
+        after.stderr
+    );
+    assert!(after.stderr.contains("library.json"), "{}", after.stderr);
+    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
+    assert!(after.library == old, "the library changed");
+    assert_eq!(after.names, ["filler", "library.json", "library.json.lock"]);
+    println!(
+        "fault: full disk (tmpfs of 1 MiB, filled): exit 35, {}",
+        first_line(&after.stderr)
+    );
+}
+
+/// A read-only folder (the tmpfs remounted read-only; root ignores `chmod`): the lock
+/// is taken on the read-only lock file, the write fails, the learner says why (exit
+/// 35, "Read-only file system"), the library is intact.
+#[test]
+fn a_read_only_folder_leaves_the_old_library_and_says_why() {
+    assert_root("a_read_only_folder_leaves_the_old_library_and_says_why");
+    let dir = tempdir("read-only");
+    let (_, old, _) = old_and_new_library(&dir);
+    let script = disk_script("8m", r#"mount -o remount,ro "$DIR/disk""#);
+    let output = in_mount_namespace(&dir, &script);
+    let after = aftermath(&dir, &output);
+    assert_eq!(after.code, 35, "{}", after.stderr);
+    assert!(
+        after.stderr.contains("Read-only file system"),
+        "{}",
+        after.stderr
+    );
+    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
+    assert!(after.library == old, "the library changed");
+    assert_eq!(after.names, ["library.json", "library.json.lock"]);
+    println!(
+        "fault: read-only folder (tmpfs remounted ro): exit 35, {}",
+        first_line(&after.stderr)
+    );
+}
+
+/// The first line of a message, for the summaries CI prints.
+fn first_line(text: &str) -> &str {
+    text.lines().next().unwrap_or("")
+}
+
+/// `strace` with `args` before the learner of `library`.
+fn under_strace(args: &[&str], library: &Path) -> Command {
+    let mut cmd = Command::new("strace");
+    cmd.args(["-f", "-qq", "-o", "/dev/null"])
+        .args(args)
+        .arg(env!("CARGO_BIN_EXE_demoplan"))
+        .arg("learn")
+        .arg(&study()[1])
+        .arg("--library")
+        .arg(library)
+        .arg("-o")
+        .arg(library)
+        .env("NO_COLOR", "1");
+    cmd
+}
+
+/// An I/O error while the library is made durable (strace makes `fsync` fail with
+/// EIO): the learner says why (exit 35, "Input/output error"), the old library is
+/// intact and the temporary file is gone.
+#[test]
+fn an_io_error_leaves_the_old_library_and_says_why() {
+    let dir = tempdir("io-error");
+    let (library, old, _) = old_and_new_library(&dir);
+    let out = under_strace(
+        &["-e", "trace=fsync", "-e", "inject=fsync:error=EIO"],
+        &library,
+    )
+    .output()
+    .expect("strace runs (Debian package strace)");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(35), "{stderr}");
+    assert!(stderr.contains("Input/output error"), "{stderr}");
+    assert!(stderr.contains("it is unchanged"), "{stderr}");
+    assert!(
+        std::fs::read(&library).unwrap() == old,
+        "the library changed"
+    );
+    assert_eq!(temporaries(&library), Vec::<String>::new());
+    println!(
+        "fault: I/O error (strace: fsync fails with EIO): exit 35, {}",
+        first_line(&stderr)
+    );
+}
+
+/// Whether process `pid` is stopped in a rename system call (`/proc/PID/syscall` starts
+/// with its number).
+fn in_rename(pid: u32) -> bool {
+    let numbers: &[&str] = if cfg!(target_arch = "x86_64") {
+        &["82", "264", "316"] // rename, renameat, renameat2
+    } else {
+        &["38", "276"] // renameat, renameat2 (aarch64 and other generic tables)
+    };
+    std::fs::read_to_string(format!("/proc/{pid}/syscall"))
+        .ok()
+        .and_then(|s| s.split_whitespace().next().map(str::to_string))
+        .is_some_and(|n| numbers.contains(&n.as_str()))
+}
+
+/// A kill guaranteed to land mid-write: strace holds the learner at the entry of its
+/// rename (its new library written in full to the temporary file) for a minute, the
+/// test sees it there and kills it (SIGKILL). The library is byte for byte the old one,
+/// the temporary file is what is left; the next learner writes the new library and
+/// removes the temporary file.
+#[test]
+fn a_learner_killed_at_its_rename_leaves_the_old_library() {
+    let dir = tempdir("killed-at-rename");
+    let (library, old, new) = old_and_new_library(&dir);
+    let mut strace = under_strace(
+        &[
+            "-e",
+            "trace=rename,renameat,renameat2",
+            "-e",
+            "inject=rename,renameat,renameat2:delay_enter=60s",
+        ],
+        &library,
+    )
+    .stdout(Stdio::null())
+    .stderr(Stdio::null())
+    .spawn()
+    .expect("strace runs (Debian package strace)");
+    let start = Instant::now();
+    let learner = loop {
+        let found = temporaries(&library).into_iter().find_map(|name| {
+            let pid: u32 = name.rsplit('-').next()?.parse().ok()?;
+            in_rename(pid).then_some((pid, name))
+        });
+        if let Some(found) = found {
+            break found;
+        }
+        assert!(
+            strace.try_wait().unwrap().is_none(),
+            "the learner ended before its rename"
+        );
+        assert!(start.elapsed() < Duration::from_secs(50), "no rename seen");
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let (pid, name) = learner;
+    let held = start.elapsed();
+    assert_eq!(
+        std::fs::read(dir.join(&name)).unwrap(),
+        new,
+        "written in full"
+    );
+    let killed = Command::new("kill")
+        .args(["-KILL", &pid.to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    // A traced process stays stopped until its tracer lets it go: strace would hold it
+    // for the rest of the delay. Killing strace detaches it, and the pending SIGKILL
+    // ends it before the rename runs (the kernel skips a system call entered with a
+    // fatal signal pending).
+    strace.kill().unwrap();
+    let status = strace.wait().unwrap();
+    assert!(!status.success(), "strace was killed: {status}");
+    while std::fs::metadata(format!("/proc/{pid}/syscall")).is_ok()
+        && !std::fs::read_to_string(format!("/proc/{pid}/stat"))
+            .unwrap_or_default()
+            .contains(") Z")
+    {
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    assert!(
+        std::fs::read(&library).unwrap() == old,
+        "the library changed"
+    );
+    assert_eq!(temporaries(&library), vec![name]);
+    let text = std::fs::read_to_string(&library).unwrap();
+    assert!(learn::Library::from_json(&text).is_ok());
+
+    run(&mut add_to(&library, &study()[1..2]));
+    assert!(std::fs::read(&library).unwrap() == new);
+    assert_eq!(temporaries(&library), Vec::<String>::new());
+    println!(
+        "fault: killed while strace held its rename (seen there {:.2} s after its start): \
+         the old library intact, its temporary file left, removed by the next learner",
+        held.as_secs_f64()
+    );
+}

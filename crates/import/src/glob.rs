@@ -2,6 +2,10 @@
 //! characters, `?` any one character, everything else itself. Names are short, so the
 //! simple backtracking below is linear enough; no character classes are needed for names.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 /// Whether `name` matches `pattern`, ignoring ASCII case.
 pub fn matches(pattern: &str, name: &str) -> bool {
     let p: Vec<char> = pattern.chars().map(|c| c.to_ascii_lowercase()).collect();
@@ -10,16 +14,17 @@ pub fn matches(pattern: &str, name: &str) -> bool {
     // Where the last `*` was, and the name position it matched up to.
     let mut star: Option<(usize, usize)> = None;
     while ni < n.len() {
+        // Positions are below the lengths of `p` and `n`: adding one cannot wrap.
         if pi < p.len() && (p[pi] == '?' || p[pi] == n[ni]) {
-            pi += 1;
-            ni += 1;
+            pi = pi.saturating_add(1);
+            ni = ni.saturating_add(1);
         } else if pi < p.len() && p[pi] == '*' {
             star = Some((pi, ni));
-            pi += 1;
+            pi = pi.saturating_add(1);
         } else if let Some((sp, sn)) = star {
-            pi = sp + 1;
-            ni = sn + 1;
-            star = Some((sp, sn + 1));
+            pi = sp.saturating_add(1);
+            ni = sn.saturating_add(1);
+            star = Some((sp, ni));
         } else {
             return false;
         }
@@ -28,6 +33,7 @@ pub fn matches(pattern: &str, name: &str) -> bool {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::matches;
 

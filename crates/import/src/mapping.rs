@@ -6,6 +6,10 @@
 //! naming the line and the key. [`Mapping::to_toml`] prints a complete mapping that reads
 //! back to the same value, so the mapping `import` used can be saved and edited.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -592,8 +596,9 @@ fn check_rule(text: &str, i: usize, rule: &EntityRule) -> Result<(), MappingErro
 
 fn position(text: &str, offset: usize) -> (usize, usize) {
     let before = &text[..offset.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let column = before.len() - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+    let line = before.matches('\n').count().saturating_add(1);
+    let line_start = before.rfind('\n').map_or(0, |i| i.saturating_add(1));
+    let column = before.len().saturating_sub(line_start).saturating_add(1);
     (line, column)
 }
 
@@ -631,7 +636,7 @@ fn key_error(text: &str, key: &str, message: String) -> MappingError {
             .is_some_and(|rest| rest.trim_start().starts_with('=') || key == "entity")
             || (key == "entity" && t.starts_with("[[entity]]"))
     });
-    let line = found.map_or(0, |(i, _)| i + 1);
+    let line = found.map_or(0, |(i, _)| i.saturating_add(1));
     MappingError {
         line,
         column: 0,
@@ -641,6 +646,7 @@ fn key_error(text: &str, key: &str, message: String) -> MappingError {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

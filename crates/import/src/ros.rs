@@ -29,6 +29,10 @@
 //! empty bag and one with no topic that gives poses. Everything is checked before the
 //! first pass where the bag's definitions allow it.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicU64;
@@ -112,6 +116,24 @@ pub fn bag_error(error: BagError) -> ImportError {
                 ),
             },
         ),
+        BagError::MessageTooLarge {
+            topic,
+            index,
+            offset,
+            size,
+            ..
+        } => ImportError::input(
+            Location {
+                topic: Some(topic.clone()),
+                message: Some(*index),
+                ..Location::default()
+            },
+            Problem::new(format!(
+                "the message (its record at byte {offset} of the file) has {size} bytes, more \
+                 than the {} a decoded message may have",
+                bags::MAX_MESSAGE
+            )),
+        ),
         BagError::Definition { topic, .. } => ImportError::input(
             Location {
                 topic: Some(topic.clone()),
@@ -183,6 +205,12 @@ impl RosBag {
         if let Some(counter) = bytes_read {
             bag.count_bytes_read(counter);
         }
+        RosBag::from_bag(bag, mapping)
+    }
+
+    /// A bag already opened (a file, or bytes in memory through [`bags::from_bytes`]),
+    /// checked against the mapping's `[bag]` section as [`RosBag::open`] does.
+    pub fn from_bag(bag: Bag, mapping: &Mapping) -> Result<RosBag, ImportError> {
         let format = match bag.format() {
             bags::Format::Ros1 => Format::Ros1,
             bags::Format::Mcap | bags::Format::Ros2Folder => Format::Ros2,
@@ -475,10 +503,16 @@ struct Pass<'b> {
     observation: Observation,
 }
 
+/// `to - from` in nanoseconds: in 128 bits, since stamps of a damaged bag may be any
+/// two `i64`s, whose difference need not fit one.
+fn nanoseconds_between(from: i64, to: i64) -> f64 {
+    i128::from(to).saturating_sub(i128::from(from)) as f64
+}
+
 impl Pass<'_> {
     fn seconds(&mut self, ns: i64) -> f64 {
         let origin = *self.origin.get_or_insert(ns);
-        (ns - origin) as f64 / 1e9
+        nanoseconds_between(origin, ns) / 1e9
     }
 
     /// Checks that `time` is not before the latest of `key`.
@@ -491,8 +525,8 @@ impl Pass<'_> {
                     field: Some(field.to_string()),
                     message: format!(
                         "time goes backwards: {} s after {} s on the same topic",
-                        (time - origin) as f64 / 1e9,
-                        (last - origin) as f64 / 1e9
+                        nanoseconds_between(origin, time) / 1e9,
+                        nanoseconds_between(origin, last) / 1e9
                     ),
                 });
             }
@@ -624,14 +658,14 @@ impl Pass<'_> {
         let mut pose = Pose::IDENTITY;
         let mut oldest: Option<i64> = None;
         let mut at = frame;
-        let mut steps = 0;
+        let mut steps = 0usize;
         while let Some(edge) = self.edges.get(at) {
             pose = edge.pose.then(&pose);
             if !edge.fixed {
                 oldest = Some(oldest.map_or(edge.time, |o| o.min(edge.time)));
             }
             at = &edge.parent;
-            steps += 1;
+            steps = steps.saturating_add(1);
             if steps > self.edges.len() {
                 return Err(format!("frame `{frame}` has no transform to the root: its transforms go round in a circle"));
             }
@@ -906,6 +940,7 @@ impl Source for RosBag {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

@@ -12,6 +12,10 @@
 //! `"Infinity"` and `"-Infinity"` (as .NET serialisers do), so that such a pose is
 //! reported as a non-finite pose of its entity rather than as a syntax error.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::cell::{Cell, RefCell};
 use std::collections::BTreeMap;
 use std::fmt;
@@ -30,6 +34,13 @@ use crate::mapping::Format;
 pub const GRAB_PRESS: &str = "OnGrabPressReplay";
 /// The release event's name.
 pub const GRAB_RELEASE: &str = "OnGrabReleaseReplay";
+
+/// Largest step of a log accepted, in bytes of its JSON text: 64 MiB (a step of 65,534
+/// records with velocities and events takes about 15 MB). The reader holds one step in
+/// memory; a step over this size is an input error naming the step and its line rather
+/// than a buffer as large as the file. Text outside the steps (before the `log` list,
+/// between and after its steps) counts towards the step that follows it.
+pub const MAX_STEP_BYTES: u64 = 64 << 20;
 
 /// Whether the start of a file looks like a Unity playback log: a JSON object whose
 /// first kilobytes name `log` or `playbackTimestepMilliseconds`.
@@ -79,15 +90,18 @@ where
 
     fn pass(&mut self, sink: &mut dyn Sink) -> Result<(), ImportError> {
         let lines = Rc::new(Cell::new(0u64));
+        let step_bytes = Rc::new(Cell::new(0u64));
         // serde_json reads a byte at a time and looks ahead by at most one, so counting
         // the newlines it has been given tells where each step ends.
         let input = LineCounter {
             inner: BufReader::with_capacity(1 << 16, (self.open)()?),
             lines: Rc::clone(&lines),
+            step_bytes: Rc::clone(&step_bytes),
         };
         let state = RefCell::new(PassState {
             sink,
             lines: Rc::clone(&lines),
+            step_bytes: Rc::clone(&step_bytes),
             step_end_line: 0,
             step: 0,
             in_log: false,
@@ -107,6 +121,25 @@ where
                 Ok(())
             }
             Err(e) => {
+                if step_bytes.get() > MAX_STEP_BYTES {
+                    let location = Location {
+                        step: state.in_log.then_some(state.step),
+                        line: Some(lines.get().saturating_add(1)),
+                        ..Location::default()
+                    };
+                    let what = if state.in_log {
+                        "the step is"
+                    } else {
+                        "the text before the `log` list is"
+                    };
+                    return Err(ImportError::input(
+                        location,
+                        Problem::new(format!(
+                            "{what} longer than {MAX_STEP_BYTES} bytes, the most a Unity log \
+                             step may have (a step is read whole)"
+                        )),
+                    ));
+                }
                 if e.is_io() {
                     return Err(ImportError::Io(std::io::Error::other(e.to_string())));
                 }
@@ -161,6 +194,9 @@ struct PassState<'s> {
     in_log: bool,
     /// Newlines read so far.
     lines: Rc<Cell<u64>>,
+    /// Bytes read since the last step began (the reader refuses more than
+    /// [`MAX_STEP_BYTES`]).
+    step_bytes: Rc<Cell<u64>>,
     /// The line on which the last step read ends (where its problems are reported).
     step_end_line: u64,
     /// A problem the sink or the step's checks raised (the JSON error carries only the
@@ -363,31 +399,45 @@ impl<'de> Visitor<'de> for Log<'_, '_> {
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
         self.state.borrow_mut().in_log = true;
-        while let Some(step) = seq.next_element::<Step>()? {
+        loop {
+            self.state.borrow().step_bytes.set(0);
+            let Some(step) = seq.next_element::<Step>()? else {
+                break;
+            };
             let mut state = self.state.borrow_mut();
-            state.step_end_line = state.lines.get() + 1;
+            state.step_end_line = state.lines.get().saturating_add(1);
             if let Err(p) = state.step(step) {
                 let message = p.message.clone();
                 state.problem = Some(p);
                 return Err(de::Error::custom(message));
             }
-            state.step += 1;
+            state.step = state.step.saturating_add(1);
         }
         Ok(())
     }
 }
 
-/// Counts the newlines read through it.
+/// Counts the newlines read through it, and the bytes since the step began; refuses to
+/// read more than [`MAX_STEP_BYTES`] for one step (the pass reports it as the step's
+/// problem).
 struct LineCounter<R> {
     inner: R,
     lines: Rc<Cell<u64>>,
+    step_bytes: Rc<Cell<u64>>,
 }
 
 impl<R: Read> Read for LineCounter<R> {
     fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
         let n = self.inner.read(buf)?;
-        let newlines = buf[..n].iter().filter(|&&b| b == b'\n').count() as u64;
-        self.lines.set(self.lines.get() + newlines);
+        let read = &buf[..n.min(buf.len())];
+        let newlines = read.iter().filter(|&&b| b == b'\n').count();
+        self.lines
+            .set(self.lines.get().saturating_add(newlines as u64));
+        let step = self.step_bytes.get().saturating_add(read.len() as u64);
+        self.step_bytes.set(step);
+        if step > MAX_STEP_BYTES {
+            return Err(std::io::Error::other("step too large"));
+        }
         Ok(n)
     }
 }

@@ -352,6 +352,37 @@ fn bad_logs_name_step_entity_and_field() {
     );
 }
 
+/// A step is read whole, so one over `MAX_STEP_BYTES` (here a record whose name pads it
+/// out) is an input error naming the step and its line, not a buffer as large as the
+/// file; the same for text before the `log` list.
+#[test]
+fn a_step_over_the_maximum_size_is_an_error_naming_it() {
+    let ok = |t| (t, vec![record("Cube_1", [0.0, 0.775, 0.4], ID, STILL, "")]);
+    let max = usize::try_from(import::unity::MAX_STEP_BYTES).unwrap();
+    let padded = |t, pad: usize| {
+        let mut step = ok(t);
+        step.1
+            .push(record(&"x".repeat(pad), [0.0, 0.8, 0.5], ID, STILL, ""));
+        step
+    };
+    let over = log(&[ok(0.0), ok(20.0), padded(40.0, max)]);
+    assert_eq!(
+        problem_of(&over),
+        "step 2, line 10: the step is longer than 67108864 bytes, the most a Unity log step \
+         may have (a step is read whole)"
+    );
+    let prefix = format!(
+        "{{\"notes\":\"{}\",{}",
+        "n".repeat(max),
+        &log(&[ok(0.0)])[1..]
+    );
+    assert_eq!(
+        problem_of(&prefix),
+        "line 1: the text before the `log` list is longer than 67108864 bytes, the most a \
+         Unity log step may have (a step is read whole)"
+    );
+}
+
 /// A source needs only `pass`: here, native frames replayed as observations without
 /// their grasps, so that the core finds the grasps from geometry. On a simulated
 /// demonstration the grasps found are the simulator's.

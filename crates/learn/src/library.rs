@@ -2,6 +2,10 @@
 //! recordings it was learned from, costs from counts and display names by rank; stored
 //! as versioned JSON.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::collections::BTreeMap;
 
 use grounding::{FactSpace, Predicate};
@@ -126,8 +130,9 @@ pub fn cost(lambda: u32, count: u64, type_count: u64) -> u32 {
         return lambda;
     }
     let count = count.min(type_count);
-    let numerator = u128::from(lambda) * u128::from(type_count - count);
-    numerator.div_ceil(u128::from(type_count)) as u32
+    // u32 times u64 fits u128, and the quotient is at most `lambda`.
+    let numerator = u128::from(lambda).saturating_mul(u128::from(type_count.saturating_sub(count)));
+    u32::try_from(numerator.div_ceil(u128::from(type_count))).unwrap_or(lambda)
 }
 
 /// What adding a recording did.
@@ -179,7 +184,7 @@ impl Library {
         if self.recordings.contains_key(&info.hash) {
             return Added::AlreadyCounted;
         }
-        let mut new_operators = 0;
+        let mut new_operators = 0usize;
         let activities = activities(segments, self.grouping);
         for s in &activities {
             let operator = lift(s, space, header);
@@ -196,14 +201,14 @@ impl Library {
                 end: millis(s.end),
             };
             let entry = self.operators.entry(operator.clone()).or_insert_with(|| {
-                new_operators += 1;
+                new_operators = new_operators.saturating_add(1);
                 Entry {
                     operator,
                     count: 0,
                     provenance: Vec::new(),
                 }
             });
-            entry.count += 1;
+            entry.count = entry.count.saturating_add(1);
             entry.provenance.push(provenance);
             sort_provenance(&mut entry.provenance);
         }
@@ -265,7 +270,7 @@ impl Library {
                     count: 0,
                     provenance: Vec::new(),
                 });
-            entry.count += mine.len() as u64;
+            entry.count = entry.count.saturating_add(mine.len() as u64);
             entry.provenance.extend(mine);
             sort_provenance(&mut entry.provenance);
         }
@@ -284,7 +289,7 @@ impl Library {
                 count: 0,
                 provenance: Vec::new(),
             });
-        entry.count += count;
+        entry.count = entry.count.saturating_add(count);
     }
 
     /// The recordings learned from, by hash.
@@ -317,13 +322,16 @@ impl Library {
         self.operators
             .values()
             .filter(|e| e.operator.activity == activity)
-            .map(|e| e.count)
-            .sum()
+            .fold(0u64, |sum, e| sum.saturating_add(e.count))
     }
 
-    /// Number of segments of all types.
+    /// Number of segments of all types. Saturating: the counts of a library read are
+    /// checked to add up without overflow (`from_json`), so only a library grown past
+    /// 2^64 - 1 segments in memory would saturate.
     pub fn segments(&self) -> u64 {
-        self.operators.values().map(|e| e.count).sum()
+        self.operators
+            .values()
+            .fold(0u64, |sum, e| sum.saturating_add(e.count))
     }
 
     /// The operators of one type, most frequent first (ties by canonical form), with
@@ -342,7 +350,7 @@ impl Library {
             .enumerate()
             .map(|(i, entry)| Ranked {
                 entry,
-                rank: i + 1,
+                rank: i.saturating_add(1),
                 cost: cost(self.lambda, entry.count, type_count),
             })
             .collect()
@@ -481,14 +489,37 @@ impl Library {
             }
             library.recordings.insert(r.hash.clone(), r);
         }
+        let mut total: u64 = 0;
         for (i, record) in file.operators.into_iter().enumerate() {
             let operator = record.operator(text, i)?;
+            // Every sum of counts (per type, per library) is at most this total.
+            total = match total.checked_add(record.count) {
+                Some(total) => total,
+                None => {
+                    return Err(LibraryError::at(
+                        text,
+                        &format!("\"{}\"", record.id),
+                        "count",
+                        format!(
+                            "operator {} ({}): the operators' counts add up to more than {} \
+                             (a count this large is no count of demonstrations)",
+                            i.saturating_add(1),
+                            record.name,
+                            u64::MAX
+                        ),
+                    ))
+                }
+            };
             if record.count == 0 {
                 return Err(LibraryError::at(
                     text,
                     &format!("\"{}\"", record.id),
                     "count",
-                    format!("operator {} ({}) has count 0", i + 1, record.name),
+                    format!(
+                        "operator {} ({}) has count 0",
+                        i.saturating_add(1),
+                        record.name
+                    ),
                 ));
             }
             for p in &record.provenance {
@@ -500,7 +531,7 @@ impl Library {
                         format!(
                             "operator {} ({}) names recording hash {}, which `recordings` \
                              does not list",
-                            i + 1,
+                            i.saturating_add(1),
                             record.name,
                             p.hash
                         ),
@@ -515,7 +546,8 @@ impl Library {
                     count: 0,
                     provenance: Vec::new(),
                 });
-            entry.count += record.count;
+            // Below `total`, checked above: no overflow.
+            entry.count = entry.count.saturating_add(record.count);
             entry.provenance.extend(record.provenance);
             sort_provenance(&mut entry.provenance);
         }
@@ -556,8 +588,9 @@ impl LibraryError {
         let (line, column) = match text.find(needle) {
             Some(offset) => {
                 let before = &text[..offset];
-                let line = before.matches('\n').count() + 1;
-                let column = offset - before.rfind('\n').map_or(0, |i| i + 1) + 1;
+                let line = before.matches('\n').count().saturating_add(1);
+                let line_start = before.rfind('\n').map_or(0, |i| i.saturating_add(1));
+                let column = offset.saturating_sub(line_start).saturating_add(1);
                 (line, column)
             }
             None => (0, 0),
@@ -632,9 +665,9 @@ impl OperatorRecord {
     fn operator(&self, text: &str, index: usize) -> Result<Operator, LibraryError> {
         let which = || {
             if self.name.is_empty() {
-                format!("operator {}", index + 1)
+                format!("operator {}", index.saturating_add(1))
             } else {
-                format!("operator {} ({})", index + 1, self.name)
+                format!("operator {} ({})", index.saturating_add(1), self.name)
             }
         };
         let activity = Activity::from_name(&self.activity).ok_or_else(|| {
@@ -746,7 +779,7 @@ fn parse_fact(s: &str, names: &[String], params: &[ParamType]) -> Result<LiftedF
             .iter()
             .position(|n| n == a)
             .ok_or_else(|| format!("`{a}` is not a parameter"))?;
-        idx[k] = i as u8;
+        idx[k] = u8::try_from(i).map_err(|_| format!("`{a}` is parameter {i}, past the 256th"))?;
     }
     if predicate.arity() == 1 {
         idx[1] = idx[0];
@@ -762,7 +795,7 @@ fn parse_fact(s: &str, names: &[String], params: &[ParamType]) -> Result<LiftedF
         if hand_slots.contains(&k) != is_hand {
             return Err(format!(
                 "argument {} of {} must be {}",
-                k + 1,
+                k.saturating_add(1),
                 predicate.name(),
                 if hand_slots.contains(&k) {
                     "a hand"
@@ -776,6 +809,7 @@ fn parse_fact(s: &str, names: &[String], params: &[ParamType]) -> Result<LiftedF
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

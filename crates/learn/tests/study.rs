@@ -289,3 +289,33 @@ fn a_library_records_its_grouping_and_old_files_counted_runs() {
         "{error}"
     );
 }
+
+/// Issue 23: counts read from a library are summed with overflow checks. Two
+/// operators whose counts add up past `u64::MAX` are an error naming the second one's
+/// line, not a wrapped (or, in a debug build, panicking) sum; counts that fit read.
+#[test]
+fn counts_that_overflow_when_summed_are_an_error() {
+    let mut library = Library::default();
+    add(&mut library, &default_recordings()[0]);
+    let text = library.to_json();
+    let mut value: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let operators = value["operators"].as_array_mut().unwrap();
+    assert!(operators.len() >= 2);
+    operators[0]["count"] = serde_json::json!(u64::MAX - 1);
+    operators[1]["count"] = serde_json::json!(1);
+    let fits = serde_json::to_string_pretty(&value).unwrap();
+    let read = Library::from_json(&fits).unwrap();
+    assert_eq!(read.segments(), u64::MAX);
+    value["operators"][1]["count"] = serde_json::json!(2);
+    let over = serde_json::to_string_pretty(&value).unwrap();
+    let e = Library::from_json(&over).unwrap_err();
+    assert_eq!(e.field, "count");
+    assert!(
+        e.message
+            .contains("counts add up to more than 18446744073709551615"),
+        "{e:?}"
+    );
+    let id = value["operators"][1]["id"].as_str().unwrap();
+    let line = over.lines().position(|l| l.contains(id)).unwrap() + 1;
+    assert_eq!(e.line, line);
+}

@@ -4,6 +4,10 @@
 //! module sees upper case. A `?` always starts a new token, so `(aircraft?a)` reads as
 //! `aircraft ?a`, as Fast Downward's reader does.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use crate::{PddlError, Span};
 
 /// A token that is not a parenthesis: a name, a `?variable`, a `:keyword`, a number or `-`.
@@ -70,7 +74,7 @@ pub(crate) fn read_single_list(source: &str) -> Result<(SExpr, Comments), PddlEr
         Some(_) => {
             let start = reader.pos;
             Err(PddlError::syntax(
-                Span::new(start, start + 1),
+                Span::new(start, start.saturating_add(1)),
                 "unexpected text after the end of the definition",
             )
             .with_label("the `(define ...)` closed before this")
@@ -98,14 +102,20 @@ impl Reader<'_> {
         self.src.get(self.pos).copied()
     }
 
+    /// Moves past the byte at `pos` (there is one: callers have peeked it, so `pos` is
+    /// below the text's length and cannot wrap).
+    fn advance(&mut self) {
+        self.pos = self.pos.saturating_add(1);
+    }
+
     fn skip_blanks(&mut self) {
         while let Some(b) = self.peek() {
             if b.is_ascii_whitespace() {
-                self.pos += 1;
+                self.advance();
             } else if b == b';' {
                 let start = self.pos;
                 while self.peek().is_some_and(|b| b != b'\n') {
-                    self.pos += 1;
+                    self.advance();
                 }
                 self.comments.spans.push(Span::new(start, self.pos));
             } else {
@@ -115,37 +125,43 @@ impl Reader<'_> {
     }
 
     fn unexpected_close(&self) -> PddlError {
-        PddlError::syntax(Span::new(self.pos, self.pos + 1), "unexpected `)`")
-            .with_label("no `(` is open here")
+        PddlError::syntax(
+            Span::new(self.pos, self.pos.saturating_add(1)),
+            "unexpected `)`",
+        )
+        .with_label("no `(` is open here")
     }
 
     /// Reads a list; `self.pos` is at its `(`. Iterative, so deep nesting cannot
     /// overflow the stack.
     fn list(&mut self) -> Result<SExpr, PddlError> {
         let mut stack: Vec<(usize, Vec<SExpr>)> = vec![(self.pos, Vec::new())];
-        self.pos += 1;
+        self.advance();
         loop {
             self.skip_blanks();
             match self.peek() {
                 None => {
                     let open = stack.last().map_or(0, |(open, _)| *open);
-                    return Err(PddlError::syntax(Span::new(open, open + 1), "unclosed `(`")
-                        .with_label("this `(` is never closed")
-                        .with_help("add the missing `)`"));
+                    return Err(PddlError::syntax(
+                        Span::new(open, open.saturating_add(1)),
+                        "unclosed `(`",
+                    )
+                    .with_label("this `(` is never closed")
+                    .with_help("add the missing `)`"));
                 }
                 Some(b'(') => {
                     if stack.len() >= MAX_DEPTH {
                         return Err(PddlError::syntax(
-                            Span::new(self.pos, self.pos + 1),
+                            Span::new(self.pos, self.pos.saturating_add(1)),
                             format!("parentheses nested deeper than {MAX_DEPTH} levels"),
                         )
                         .with_label("too deep"));
                     }
                     stack.push((self.pos, Vec::new()));
-                    self.pos += 1;
+                    self.advance();
                 }
                 Some(b')') => {
-                    self.pos += 1;
+                    self.advance();
                     let Some((open, items)) = stack.pop() else {
                         return Err(self.unexpected_close());
                     };
@@ -171,12 +187,12 @@ impl Reader<'_> {
     /// Reads a token at `self.pos` (not a delimiter). A `?` inside a token starts a new one.
     fn token(&mut self) -> Token {
         let start = self.pos;
-        self.pos += 1;
+        self.advance();
         while let Some(b) = self.peek() {
             if is_delimiter(b) || b == b'?' {
                 break;
             }
-            self.pos += 1;
+            self.advance();
         }
         let raw = String::from_utf8_lossy(&self.src[start..self.pos]);
         Token {
@@ -187,6 +203,7 @@ impl Reader<'_> {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

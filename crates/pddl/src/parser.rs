@@ -1,6 +1,10 @@
 //! From S-expressions to the typed AST: PDDL's grammar, and the line between the
 //! supported fragment and the rest of PDDL.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use crate::ast::*;
 use crate::lexer::{read_single_list, Comments, SExpr, Token};
 use crate::{PddlError, Span};
@@ -132,7 +136,7 @@ enum ItemKind {
 fn typed_list(items: &[SExpr], kind: ItemKind, what: &str) -> Result<Vec<Typed>, PddlError> {
     let mut out: Vec<Typed> = Vec::new();
     let mut untyped_from = 0;
-    let mut i = 0;
+    let mut i = 0usize;
     while i < items.len() {
         let token = expect_token(&items[i], what)?;
         if token.text == "-" {
@@ -142,7 +146,7 @@ fn typed_list(items: &[SExpr], kind: ItemKind, what: &str) -> Result<Vec<Typed>,
                         .with_label("a type needs names to apply to"),
                 );
             }
-            let ty = match items.get(i + 1) {
+            let ty = match items.get(i.saturating_add(1)) {
                 Some(e) => parse_type(e)?,
                 None => {
                     return Err(PddlError::syntax(token.span, "expected a type after `-`")
@@ -153,14 +157,14 @@ fn typed_list(items: &[SExpr], kind: ItemKind, what: &str) -> Result<Vec<Typed>,
                 item.ty = Some(ty.clone());
             }
             untyped_from = out.len();
-            i += 2;
+            i = i.saturating_add(2);
         } else {
             let name = match kind {
                 ItemKind::Variable => variable(token)?,
                 ItemKind::Name => plain_name(token, what)?,
             };
             out.push(Typed { name, ty: None });
-            i += 1;
+            i = i.saturating_add(1);
         }
     }
     Ok(out)
@@ -340,16 +344,16 @@ fn skeleton(items: &[SExpr], span: Span, what: &str) -> Result<(Name, Vec<Typed>
 
 fn functions(body: &[SExpr]) -> Result<Vec<FunctionDecl>, PddlError> {
     let mut out = Vec::new();
-    let mut i = 0;
+    let mut i = 0usize;
     while i < body.len() {
         match &body[i] {
             SExpr::List { items, span } => {
                 let (name, params) = skeleton(items, *span, "a function name")?;
                 out.push(FunctionDecl { name, params });
-                i += 1;
+                i = i.saturating_add(1);
             }
             SExpr::Token(t) if t.text == "-" => {
-                match body.get(i + 1) {
+                match body.get(i.saturating_add(1)) {
                     Some(SExpr::Token(ty)) if ty.text == "number" => {}
                     Some(other) => {
                         return Err(PddlError::unsupported(
@@ -359,7 +363,7 @@ fn functions(body: &[SExpr]) -> Result<Vec<FunctionDecl>, PddlError> {
                     }
                     None => return Err(PddlError::syntax(t.span, "expected `number` after `-`")),
                 }
-                i += 2;
+                i = i.saturating_add(2);
             }
             SExpr::Token(t) => {
                 return Err(PddlError::syntax(
@@ -390,7 +394,7 @@ fn action(body: &[SExpr], span: Span) -> Result<Action, PddlError> {
     let mut i = 1;
     while i < body.len() {
         let key = expect_token(&body[i], "`:parameters`, `:precondition` or `:effect`")?;
-        let value = body.get(i + 1).ok_or_else(|| {
+        let value = body.get(i.saturating_add(1)).ok_or_else(|| {
             PddlError::syntax(key.span, format!("`{}` has no value", key.text))
                 .with_label("expected a list after this")
         })?;
@@ -424,7 +428,7 @@ fn action(body: &[SExpr], span: Span) -> Result<Action, PddlError> {
                 .with_label("not an action keyword"))
             }
         }
-        i += 2;
+        i = i.saturating_add(2);
     }
     Ok(a)
 }

@@ -2,6 +2,10 @@
 //! reader would refuse) and the reader (which checks a header once it is parsed; frame
 //! rules are checked while parsing, with the same messages, to point at the token).
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use crate::model::{EntityId, EntityKind, EntityState, Frame, Header, Pose};
 
 /// A broken rule: the field (as a path) and what is wrong.
@@ -23,6 +27,11 @@ fn problem(field: impl Into<String>, message: impl Into<String>) -> Problem {
 /// Longest entity name in bytes.
 pub const MAX_NAME_LEN: usize = 64;
 
+/// Most entities a recording may declare: 65,534. Readers downstream index entities in 16
+/// bits (`grounding` keeps the object a hand acts on or holds as a `u16`, with `u16::MAX`
+/// for none), so the format stops one short of that.
+pub const MAX_ENTITIES: usize = 65_534;
+
 /// Whether `name` is a valid entity name: an ASCII letter, then ASCII letters, digits, `_`
 /// or `-`, at most [`MAX_NAME_LEN`] bytes.
 pub fn is_valid_name(name: &str) -> bool {
@@ -38,6 +47,13 @@ pub(crate) fn name_message(name: &str) -> String {
     format!(
         "`{name}` is not a valid entity name (an ASCII letter, then letters, digits, `_` or `-`, \
          at most {MAX_NAME_LEN} bytes)"
+    )
+}
+
+pub(crate) fn too_many_entities_message(count: usize) -> String {
+    format!(
+        "{count} entities: a recording declares at most {MAX_ENTITIES} (entities are indexed \
+         in 16 bits); split the scene or leave untracked objects out"
     )
 }
 
@@ -101,8 +117,11 @@ pub fn check_header(header: &Header) -> Result<(), Problem> {
             "no entities: a recording tracks something",
         ));
     }
-    if u32::try_from(header.entities.len()).is_err() {
-        return Err(problem("entities", "too many entities"));
+    if header.entities.len() > MAX_ENTITIES {
+        return Err(problem(
+            "entities",
+            too_many_entities_message(header.entities.len()),
+        ));
     }
     let mut seen: rustc_hash::FxHashMap<String, usize> = Default::default();
     for (i, e) in header.entities.iter().enumerate() {
@@ -181,9 +200,10 @@ pub fn check_frame(header: &Header, frame: &Frame, previous: Option<f64>) -> Res
             ),
         ));
     }
-    for (i, state) in frame.states.iter().enumerate() {
+    // As many states as entities (checked above), at most `MAX_ENTITIES`: ids fit u32.
+    for (id, state) in (0u32..).map(EntityId).zip(&frame.states) {
         if let Some(state) = state {
-            check_state(header, EntityId(i as u32), state)?;
+            check_state(header, id, state)?;
         }
     }
     for (i, c) in frame.contacts.iter().enumerate() {
@@ -250,6 +270,7 @@ fn check_state(header: &Header, id: EntityId, state: &EntityState) -> Result<(),
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

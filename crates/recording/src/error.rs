@@ -68,6 +68,16 @@ pub enum ErrorKind {
     /// Well-formed but inconsistent: a grip out of range, a missing field, a duplicate.
     #[error("{0}")]
     Invalid(String),
+    /// A line longer than [`crate::MAX_LINE_BYTES`] (or a file with no line end in that
+    /// many bytes).
+    #[error(
+        "the line is longer than {max} bytes, the most a recording line may have (one line \
+         holds the header or one frame)"
+    )]
+    LineTooLong {
+        /// The longest line accepted, in bytes.
+        max: usize,
+    },
 }
 
 impl ErrorKind {
@@ -85,6 +95,7 @@ impl ErrorKind {
             ErrorKind::Time { .. } => "time",
             ErrorKind::UnknownEntity(_) => "unknown-entity",
             ErrorKind::Invalid(_) => "invalid",
+            ErrorKind::LineTooLong { .. } => "line-too-long",
         }
     }
 }

@@ -62,13 +62,13 @@ mod summary;
 mod writer;
 
 pub use activity::Activity;
-pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_NAME_LEN};
+pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_ENTITIES, MAX_NAME_LEN};
 pub use error::{ErrorKind, ReadError, WriteError};
 pub use model::{
     Contact, Entity, EntityId, EntityKind, EntityState, Frame, Header, Pose, Quaternion, Recording,
     Vec3,
 };
-pub use reader::Reader;
+pub use reader::{Reader, MAX_LINE_BYTES};
 pub use summary::{Summary, GAP};
 pub use writer::Writer;
 

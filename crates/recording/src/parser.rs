@@ -4,6 +4,10 @@
 //! header's order first), parses short decimals with an exact fast path, and builds a
 //! field path only when it reports an error.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::borrow::Cow;
 
 use rustc_hash::FxHashMap;
@@ -124,7 +128,7 @@ impl<'a> Cursor<'a> {
     fn ws(&mut self) {
         while let Some(&c) = self.b.get(self.i) {
             if c == b' ' || c == b'\t' {
-                self.i += 1;
+                self.i = self.i.saturating_add(1);
             } else {
                 break;
             }
@@ -148,7 +152,7 @@ impl<'a> Cursor<'a> {
             Some(b'"') => rest[1..]
                 .iter()
                 .position(|&c| c == b'"')
-                .map_or(rest.len(), |p| p + 2),
+                .map_or(rest.len(), |p| p.saturating_add(2)),
             Some(_) => rest
                 .iter()
                 .position(|c| b",:]} \t".contains(c))
@@ -167,7 +171,7 @@ impl<'a> Cursor<'a> {
             [b'"', b'g', b'r', b'i', b'p', b'"', ..] => (Member::Grip, 6),
             _ => return None,
         };
-        self.i += len;
+        self.i = self.i.saturating_add(len);
         Some(member)
     }
 
@@ -189,7 +193,7 @@ impl<'a> Cursor<'a> {
     #[inline]
     fn expect(&mut self, byte: u8, field: Field<'_>, expected: &str) -> Result<(), LineError> {
         if self.peek() == Some(byte) {
-            self.i += 1;
+            self.i = self.i.saturating_add(1);
             Ok(())
         } else {
             Err(self.unexpected(field, expected))
@@ -202,12 +206,12 @@ impl<'a> Cursor<'a> {
         self.ws();
         match self.peek() {
             Some(b',') => {
-                self.i += 1;
+                self.i = self.i.saturating_add(1);
                 self.ws();
                 Ok(true)
             }
             Some(c) if c == close => {
-                self.i += 1;
+                self.i = self.i.saturating_add(1);
                 Ok(false)
             }
             _ => Err(self.unexpected(field, &format!("`,` or `{}`", close as char))),
@@ -220,13 +224,13 @@ impl<'a> Cursor<'a> {
             return Err(self.unexpected(field, "a string"));
         }
         let open = self.i;
-        let start = self.i + 1;
+        let start = self.i.saturating_add(1);
         let mut j = start;
         let b = self.b;
         while j < b.len() {
             match b[j] {
                 b'"' => {
-                    self.i = j + 1;
+                    self.i = j.saturating_add(1);
                     return Ok(Cow::Borrowed(&b[start..j]));
                 }
                 b'\\' => return self.escaped_string(open, field),
@@ -238,7 +242,7 @@ impl<'a> Cursor<'a> {
                         ErrorKind::Syntax("control character inside a string".into()),
                     ))
                 }
-                _ => j += 1,
+                _ => j = j.saturating_add(1),
             }
         }
         Err(self.truncated(field))
@@ -250,13 +254,13 @@ impl<'a> Cursor<'a> {
         field: Field<'_>,
     ) -> Result<Cow<'a, [u8]>, LineError> {
         let b = self.b;
-        let mut j = open + 1;
+        let mut j = open.saturating_add(1);
         while j < b.len() {
             match b[j] {
-                b'\\' => j += 2,
+                b'\\' => j = j.saturating_add(2),
                 b'"' => {
                     let text = &b[open..=j];
-                    self.i = j + 1;
+                    self.i = j.saturating_add(1);
                     return serde_json::from_slice::<String>(text)
                         .map(|s| Cow::Owned(s.into_bytes()))
                         .map_err(|e| {
@@ -268,7 +272,7 @@ impl<'a> Cursor<'a> {
                             )
                         });
                 }
-                _ => j += 1,
+                _ => j = j.saturating_add(1),
             }
         }
         Err(self.truncated(field))
@@ -281,15 +285,15 @@ impl<'a> Cursor<'a> {
         let mut j = start;
         let negative = b.get(j) == Some(&b'-');
         if negative {
-            j += 1;
+            j = j.saturating_add(1);
         }
         match b.get(j) {
             Some(c) if c.is_ascii_digit() => {}
             Some(c) if c.is_ascii_alphabetic() => {
-                let end = j + b[j..]
+                let end = b[j..]
                     .iter()
                     .position(|c| !c.is_ascii_alphabetic())
-                    .unwrap_or(b.len() - j);
+                    .map_or(b.len(), |k| j.saturating_add(k));
                 let word = String::from_utf8_lossy(&b[start..end]).into_owned();
                 let lower = word.trim_start_matches('-').to_ascii_lowercase();
                 let kind = if matches!(lower.as_str(), "nan" | "inf" | "infinity") {
@@ -297,7 +301,7 @@ impl<'a> Cursor<'a> {
                 } else {
                     ErrorKind::Syntax(format!("expected a number, found `{word}`"))
                 };
-                return Err(error(start, end - start, field, kind));
+                return Err(error(start, end.saturating_sub(start), field, kind));
             }
             None if j >= b.len() => return Err(self.truncated(field)),
             _ => return Err(self.unexpected(field, "a number")),
@@ -309,31 +313,35 @@ impl<'a> Cursor<'a> {
             if !c.is_ascii_digit() {
                 break;
             }
-            mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(c - b'0'));
-            digits += 1;
-            j += 1;
+            mantissa = mantissa
+                .wrapping_mul(10)
+                .wrapping_add(u64::from(c.saturating_sub(b'0')));
+            digits = digits.saturating_add(1);
+            j = j.saturating_add(1);
         }
-        if b[int_start] == b'0' && j - int_start > 1 {
+        if b[int_start] == b'0' && j.saturating_sub(int_start) > 1 {
             return Err(error(
                 start,
-                j - start,
+                j.saturating_sub(start),
                 field,
                 ErrorKind::Syntax("a number with a leading zero".into()),
             ));
         }
         let mut fraction_digits = 0usize;
         if b.get(j) == Some(&b'.') {
-            j += 1;
+            j = j.saturating_add(1);
             let frac_start = j;
             while let Some(&c) = b.get(j) {
                 if !c.is_ascii_digit() {
                     break;
                 }
-                mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(c - b'0'));
-                digits += 1;
-                j += 1;
+                mantissa = mantissa
+                    .wrapping_mul(10)
+                    .wrapping_add(u64::from(c.saturating_sub(b'0')));
+                digits = digits.saturating_add(1);
+                j = j.saturating_add(1);
             }
-            fraction_digits = j - frac_start;
+            fraction_digits = j.saturating_sub(frac_start);
             if fraction_digits == 0 {
                 return Err(self.bad_number(start, j, field));
             }
@@ -341,13 +349,13 @@ impl<'a> Cursor<'a> {
         let mut plain = digits <= 19;
         if matches!(b.get(j), Some(b'e' | b'E')) {
             plain = false;
-            j += 1;
+            j = j.saturating_add(1);
             if matches!(b.get(j), Some(b'+' | b'-')) {
-                j += 1;
+                j = j.saturating_add(1);
             }
             let exp_start = j;
             while b.get(j).is_some_and(u8::is_ascii_digit) {
-                j += 1;
+                j = j.saturating_add(1);
             }
             if j == exp_start {
                 return Err(self.bad_number(start, j, field));
@@ -370,7 +378,7 @@ impl<'a> Cursor<'a> {
         }
         error(
             start,
-            end - start,
+            end.saturating_sub(start),
             field,
             ErrorKind::Syntax(format!(
                 "malformed number `{}`",
@@ -382,7 +390,7 @@ impl<'a> Cursor<'a> {
     fn not_finite(&self, n: &Number, field: Field<'_>) -> LineError {
         error(
             n.start,
-            n.end - n.start,
+            n.end.saturating_sub(n.start),
             field,
             ErrorKind::NotFinite(String::from_utf8_lossy(&self.b[n.start..n.end]).into_owned()),
         )
@@ -397,7 +405,7 @@ impl<'a> Cursor<'a> {
         let b = self.b;
         let mut j = self.i;
         let negative = b.get(j) == Some(&b'-');
-        j += usize::from(negative);
+        j = j.saturating_add(usize::from(negative));
         let int_start = j;
         let mut m: u64 = 0;
         while let Some(&c) = b.get(j) {
@@ -406,15 +414,15 @@ impl<'a> Cursor<'a> {
                 break;
             }
             m = m.wrapping_mul(10).wrapping_add(u64::from(d));
-            j += 1;
+            j = j.saturating_add(1);
         }
-        let int_digits = j - int_start;
+        let int_digits = j.saturating_sub(int_start);
         if int_digits == 0 || (int_digits > 1 && b[int_start] == b'0') {
             return None;
         }
         let mut fraction = 0;
         if b.get(j) == Some(&b'.') {
-            j += 1;
+            j = j.saturating_add(1);
             let frac_start = j;
             while let Some(&c) = b.get(j) {
                 let d = c.wrapping_sub(b'0');
@@ -422,14 +430,14 @@ impl<'a> Cursor<'a> {
                     break;
                 }
                 m = m.wrapping_mul(10).wrapping_add(u64::from(d));
-                j += 1;
+                j = j.saturating_add(1);
             }
-            fraction = j - frac_start;
+            fraction = j.saturating_sub(frac_start);
             if fraction == 0 {
                 return None;
             }
         }
-        if int_digits + fraction > 19 || matches!(b.get(j), Some(b'e' | b'E')) {
+        if int_digits.saturating_add(fraction) > 19 || matches!(b.get(j), Some(b'e' | b'E')) {
             return None;
         }
         Some((negative, m, fraction, j))
@@ -479,7 +487,7 @@ impl<'a> Cursor<'a> {
             self.slow_parse::<f64>(&n, field)?
         };
         if v.is_finite() {
-            Ok((v, n.start, n.end - n.start))
+            Ok((v, n.start, n.end.saturating_sub(n.start)))
         } else {
             Err(self.not_finite(&n, field))
         }
@@ -516,7 +524,7 @@ impl<'a> Cursor<'a> {
             }
             *slot = self.f32(Field::Element(name, member, k))?;
             self.ws();
-            if k + 1 < N {
+            if k.saturating_add(1) < N {
                 if self.peek() == Some(b']') {
                     return Err(error(
                         self.i,
@@ -524,7 +532,7 @@ impl<'a> Cursor<'a> {
                         Field::Member(name, member),
                         ErrorKind::Invalid(format!(
                             "`{member}` needs {N} numbers, found {}",
-                            k + 1
+                            k.saturating_add(1)
                         )),
                     ));
                 }
@@ -598,6 +606,12 @@ pub(crate) struct TimeToken {
     pub width: usize,
 }
 
+/// The id of the entity at `index` in the header. Indices are below the header's entity
+/// count, at most [`check::MAX_ENTITIES`], so they fit `u32`.
+fn entity_id(index: usize) -> EntityId {
+    EntityId(u32::try_from(index).unwrap_or(u32::MAX))
+}
+
 impl FrameParser {
     pub fn new(header: &Header) -> FrameParser {
         let names: Vec<Box<[u8]>> = header
@@ -608,7 +622,7 @@ impl FrameParser {
         let map = names
             .iter()
             .enumerate()
-            .map(|(i, n)| (n.clone(), i as u32))
+            .map(|(i, n)| (n.clone(), entity_id(i).0))
             .collect();
         FrameParser {
             kinds: header.entities.iter().map(|e| e.kind).collect(),
@@ -622,8 +636,9 @@ impl FrameParser {
     fn lookup(&self, name: &[u8], hint: &mut usize) -> Option<usize> {
         if let Some(n) = self.names.get(*hint) {
             if **n == *name {
-                *hint += 1;
-                return Some(*hint - 1);
+                let id = *hint;
+                *hint = id.saturating_add(1);
+                return Some(id);
             }
         }
         // A few names are faster to compare than to hash.
@@ -632,7 +647,7 @@ impl FrameParser {
         } else {
             *self.map.get(name)? as usize
         };
-        *hint = id + 1;
+        *hint = id.saturating_add(1);
         Some(id)
     }
 
@@ -649,12 +664,12 @@ impl FrameParser {
         if c.peek() != Some(b'{') {
             return Err(c.unexpected(Field::Root, "a frame (a JSON object starting with `{`)"));
         }
-        c.i += 1;
+        c.i = c.i.saturating_add(1);
         c.ws();
         let mut time: Option<TimeToken> = None;
         let (mut entities, mut contacts) = (false, false);
         if c.peek() == Some(b'}') {
-            c.i += 1;
+            c.i = c.i.saturating_add(1);
         } else {
             loop {
                 let key_at = c.i;
@@ -666,7 +681,7 @@ impl FrameParser {
                     if seen {
                         Err(error(
                             key_at,
-                            key.len() + 2,
+                            key.len().saturating_add(2),
                             Field::Key(&key),
                             ErrorKind::Invalid(format!(
                                 "field `{}` given twice",
@@ -697,7 +712,7 @@ impl FrameParser {
                     other => {
                         return Err(error(
                             key_at,
-                            key.len() + 2,
+                            key.len().saturating_add(2),
                             Field::Key(other),
                             ErrorKind::Invalid(format!(
                                 "unknown field `{}` (a frame has `t`, `entities` and `contacts`)",
@@ -715,7 +730,7 @@ impl FrameParser {
         if c.i < line.len() {
             return Err(error(
                 c.i,
-                line.len() - c.i,
+                line.len().saturating_sub(c.i),
                 Field::Root,
                 ErrorKind::Syntax("text after the end of the frame".into()),
             ));
@@ -734,14 +749,14 @@ impl FrameParser {
         c.expect(b'{', Field::Entities, "`{`")?;
         c.ws();
         if c.peek() == Some(b'}') {
-            c.i += 1;
+            c.i = c.i.saturating_add(1);
             return Ok(());
         }
         let mut hint = 0usize;
         loop {
             let key_at = c.i;
             let key = c.string(Field::Entities)?;
-            let width = key.len() + 2;
+            let width = key.len().saturating_add(2);
             let Some(id) = self.lookup(&key, &mut hint) else {
                 return Err(error(
                     key_at,
@@ -784,7 +799,7 @@ impl FrameParser {
         let kind = self.kinds[id];
         let mut parts = Parts::default();
         if c.peek() == Some(b'}') {
-            c.i += 1;
+            c.i = c.i.saturating_add(1);
         } else {
             loop {
                 let key_at = c.i;
@@ -798,7 +813,7 @@ impl FrameParser {
                             .ok_or_else(|| {
                                 error(
                                     key_at,
-                                    key.len() + 2,
+                                    key.len().saturating_add(2),
                                     Field::Entity(name),
                                     ErrorKind::Invalid(format!(
                                         "unknown field `{}` (an entity state has `pos`, `rot`, \
@@ -863,7 +878,7 @@ impl FrameParser {
         key_at: usize,
         parts: &mut Parts,
     ) -> Result<(), LineError> {
-        let key_width = member.name().len() + 2;
+        let key_width = member.name().len().saturating_add(2);
         let field = Field::Member(name, member.name());
         let seen = match member {
             Member::Pos => parts.pos.is_some(),
@@ -888,7 +903,7 @@ impl FrameParser {
                 if !q.is_unit() {
                     return Err(error(
                         value_at,
-                        c.i - value_at,
+                        c.i.saturating_sub(value_at),
                         field,
                         ErrorKind::Invalid(check::quaternion_message(q.norm())),
                     ));
@@ -909,7 +924,7 @@ impl FrameParser {
                 if !(0.0..=1.0).contains(&g) {
                     return Err(error(
                         value_at,
-                        c.i - value_at,
+                        c.i.saturating_sub(value_at),
                         field,
                         ErrorKind::Invalid(check::grip_range_message(g)),
                     ));
@@ -942,12 +957,12 @@ impl FrameParser {
             ));
         }
         if c.b[c.i..].starts_with(b"null") {
-            c.i += 4;
+            c.i = c.i.saturating_add(4);
             return Ok(None);
         }
         let at = c.i;
         let held = c.string(field)?;
-        let width = c.i - at;
+        let width = c.i.saturating_sub(at);
         let mut no_hint = usize::MAX;
         let Some(h) = self.lookup(&held, &mut no_hint) else {
             return Err(error(
@@ -966,7 +981,7 @@ impl FrameParser {
         };
         match message {
             Some(m) => Err(error(at, width, field, ErrorKind::Invalid(m))),
-            None => Ok(Some(EntityId(h as u32))),
+            None => Ok(Some(entity_id(h))),
         }
     }
 
@@ -974,7 +989,7 @@ impl FrameParser {
         c.expect(b'[', Field::Contacts, "`[`")?;
         c.ws();
         if c.peek() == Some(b']') {
-            c.i += 1;
+            c.i = c.i.saturating_add(1);
             return Ok(());
         }
         let mut i = 0usize;
@@ -994,7 +1009,7 @@ impl FrameParser {
                 *slot = self.lookup(&name, &mut no_hint).ok_or_else(|| {
                     error(
                         at,
-                        c.i - at,
+                        c.i.saturating_sub(at),
                         Field::ContactEnd(i, j),
                         ErrorKind::UnknownEntity(String::from_utf8_lossy(&name).into_owned()),
                     )
@@ -1017,16 +1032,16 @@ impl FrameParser {
             if ids[0] == ids[1] {
                 return Err(error(
                     open,
-                    c.i - open,
+                    c.i.saturating_sub(open),
                     Field::Contact(i),
                     ErrorKind::Invalid(check::contact_self_message(self.name(ids[0]))),
                 ));
             }
             frame.contacts.push(Contact {
-                a: EntityId(ids[0] as u32),
-                b: EntityId(ids[1] as u32),
+                a: entity_id(ids[0]),
+                b: entity_id(ids[1]),
             });
-            i += 1;
+            i = i.saturating_add(1);
             if !c.comma_or(b']', Field::Contacts)? {
                 return Ok(());
             }
@@ -1035,6 +1050,7 @@ impl FrameParser {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

@@ -1,6 +1,10 @@
 //! The streaming reader: the header when it is made, then one frame at a time.
 
-use std::io::BufRead;
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
+use std::io::{BufRead, Read};
 
 use serde_json::Value;
 
@@ -10,8 +14,14 @@ use crate::model::{Entity, EntityKind, Frame, Header, Pose, Quaternion, Vec3};
 use crate::parser::{strip_position, FrameParser, LineError};
 use crate::{FORMAT_NAME, FORMAT_VERSION};
 
-/// Reads a recording line by line. Memory use is bounded by the longest line, whatever
-/// the length of the recording.
+/// Longest line of a recording, in bytes, without its line ending: 64 MiB. A frame of
+/// all [`crate::MAX_ENTITIES`] entities with every field takes about 10 MB; a longer line
+/// is an error ([`ErrorKind::LineTooLong`]) rather than a buffer that grows with the file
+/// (a file with no newline at all).
+pub const MAX_LINE_BYTES: usize = 64 << 20;
+
+/// Reads a recording line by line. Memory use is bounded by the longest line (at most
+/// [`MAX_LINE_BYTES`]), whatever the length of the recording.
 ///
 /// Blank lines are skipped (and counted); lines may end in `\n` or `\r\n`; the last line
 /// need not end in a newline. After an error the reader yields nothing more.
@@ -111,7 +121,7 @@ impl<R: BufRead> Reader<R> {
             if frame.time <= previous {
                 return Err(ReadError::new(
                     line,
-                    time.column + 1,
+                    time.column.saturating_add(1),
                     time.width,
                     "t",
                     ErrorKind::Time {
@@ -141,7 +151,7 @@ impl<R: BufRead> Iterator for Reader<R> {
 }
 
 fn at_line(line: u64, e: LineError) -> ReadError {
-    ReadError::new(line, e.column + 1, e.width, e.field, e.kind)
+    ReadError::new(line, e.column.saturating_add(1), e.width, e.field, e.kind)
 }
 
 fn is_blank(line: &[u8]) -> bool {
@@ -155,18 +165,35 @@ fn next_line<R: BufRead>(
     line: &mut u64,
 ) -> Result<Option<()>, ReadError> {
     buf.clear();
+    // At most the longest line and its `\r\n`: one byte more means the line is too long.
+    const READ_AT_MOST: u64 = MAX_LINE_BYTES as u64 + 2;
+    let this_line = line.saturating_add(1);
     let n = input
+        .by_ref()
+        .take(READ_AT_MOST)
         .read_until(b'\n', buf)
-        .map_err(|e| ReadError::new(*line + 1, 1, 0, "", ErrorKind::Io(e)))?;
+        .map_err(|e| ReadError::new(this_line, 1, 0, "", ErrorKind::Io(e)))?;
     if n == 0 {
         return Ok(None);
     }
-    *line += 1;
-    if buf.last() == Some(&b'\n') {
+    *line = this_line;
+    let ended = buf.last() == Some(&b'\n');
+    if ended {
         buf.pop();
         if buf.last() == Some(&b'\r') {
             buf.pop();
         }
+    }
+    if buf.len() > MAX_LINE_BYTES || (!ended && n as u64 == READ_AT_MOST) {
+        return Err(ReadError::new(
+            this_line,
+            1,
+            0,
+            "",
+            ErrorKind::LineTooLong {
+                max: MAX_LINE_BYTES,
+            },
+        ));
     }
     Ok(Some(()))
 }
@@ -178,7 +205,7 @@ fn header_error(text: &[u8], line: u64, field: &str, key: &str, kind: ErrorKind)
         .windows(needle.len())
         .position(|w| w == needle.as_bytes());
     match found {
-        Some(p) => ReadError::new(line, p + 1, needle.len(), field, kind),
+        Some(p) => ReadError::new(line, p.saturating_add(1), needle.len(), field, kind),
         None => ReadError::new(line, 1, 1, field, kind),
     }
 }
@@ -284,6 +311,14 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
         }
     };
     let entities = match obj.get("entities") {
+        // Before looking at each of them: a count over the limit is the whole story.
+        Some(Value::Array(list)) if list.len() > check::MAX_ENTITIES => {
+            return Err(invalid(
+                "entities",
+                "entities",
+                check::too_many_entities_message(list.len()),
+            ))
+        }
         Some(Value::Array(list)) => list
             .iter()
             .enumerate()
@@ -459,7 +494,11 @@ fn numbers<const N: usize>(
     }
     let mut out = [0.0f32; N];
     for (slot, v) in out.iter_mut().zip(list) {
-        *slot = v.as_f64().ok_or_else(bad)? as f32;
+        // The format's numbers are f32: rounding is the point, and one too large for
+        // f32 becomes an infinity, refused below.
+        #[allow(clippy::cast_possible_truncation)]
+        let narrowed = v.as_f64().ok_or_else(bad)? as f32;
+        *slot = narrowed;
         if !slot.is_finite() {
             return Err(invalid(field, near, format!("`{field}` is not finite")));
         }
@@ -468,6 +507,7 @@ fn numbers<const N: usize>(
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 
@@ -649,5 +689,79 @@ mod tests {
                 "{text}: {e}"
             );
         }
+    }
+
+    /// A header declaring `n` cubes.
+    fn header_with_cubes(n: usize) -> String {
+        let cubes: Vec<String> = (0..n)
+            .map(|i| format!(r#"{{"name":"c{i}","kind":"cube","size":[0.05,0.05,0.05]}}"#))
+            .collect();
+        format!(
+            r#"{{"format":"demoplan-recording","version":1,"id":"r","participant":"p","task":"t","frame_rate":90,"entities":[{}]}}"#,
+            cubes.join(",")
+        )
+    }
+
+    #[test]
+    fn a_header_of_65535_entities_or_more_is_refused_naming_its_field() {
+        let most = header_with_cubes(crate::MAX_ENTITIES);
+        assert_eq!(
+            Reader::new(most.as_bytes())
+                .unwrap()
+                .header()
+                .entities
+                .len(),
+            65_534
+        );
+        for n in [crate::MAX_ENTITIES + 1, 70_000] {
+            let text = format!("{}\n{{\"t\":0}}\n", header_with_cubes(n));
+            let e = Reader::new(text.as_bytes()).unwrap_err();
+            assert_eq!(
+                (e.line, e.field.as_str(), e.kind.code()),
+                (1, "entities", "invalid")
+            );
+            assert!(e.to_string().contains(&format!("{n} entities")), "{e}");
+            assert!(e.to_string().contains("at most 65534"), "{e}");
+            // The column points at the `"entities"` key.
+            assert_eq!(&text[e.column as usize - 1..][..10], "\"entities\"");
+        }
+    }
+
+    #[test]
+    fn a_line_longer_than_the_maximum_is_an_error_naming_it() {
+        // A frame line padded with spaces (valid JSON) to exactly the longest line, then
+        // one byte longer; and a file that never ends its line.
+        let frame = |len: usize| {
+            let mut line = String::from("{\"t\":0");
+            line.push_str(&" ".repeat(len - line.len() - 1));
+            line.push('}');
+            line
+        };
+        let longest = format!("{HEADER}\n{}\r\n{{\"t\":1}}\n", frame(MAX_LINE_BYTES));
+        let frames: Vec<Frame> = Reader::new(longest.as_bytes())
+            .unwrap()
+            .map(|f| f.unwrap())
+            .collect();
+        assert_eq!(frames.len(), 2);
+        for (text, line) in [
+            (
+                format!("{HEADER}\n{}\n{{\"t\":1}}\n", frame(MAX_LINE_BYTES + 1)),
+                2,
+            ),
+            (
+                format!("{HEADER}\n{{\"t\":0}}\n{}", "x".repeat(MAX_LINE_BYTES * 2)),
+                3,
+            ),
+        ] {
+            let e = Reader::new(text.as_bytes())
+                .unwrap()
+                .collect::<Result<Vec<Frame>, _>>()
+                .unwrap_err();
+            assert_eq!((e.line, e.kind.code()), (line, "line-too-long"), "{e}");
+            assert!(e.to_string().contains("longer than 67108864 bytes"), "{e}");
+        }
+        let e =
+            Reader::new(format!("{}\n", " ".repeat(MAX_LINE_BYTES + 1)).as_bytes()).unwrap_err();
+        assert_eq!((e.line, e.kind.code()), (1, "line-too-long"));
     }
 }

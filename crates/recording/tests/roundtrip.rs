@@ -179,7 +179,9 @@ fn bits(r: &Recording) -> Vec<u64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    // Failures are saved to, and replayed first from, `tests/roundtrip.proptest-regressions`
+    // (proptest's default persistence; committed, so every run replays them).
+    #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
     fn write_then_read_gives_the_same_recording(r in recording()) {

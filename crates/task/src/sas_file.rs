@@ -50,6 +50,10 @@
 //! Reading takes time linear in the size of the file, plus sorting each partial
 //! assignment by variable; writing takes `O(n log n)` for an operator with `n` facts.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::fmt;
 
 use crate::{Fact, Operator, Task, TaskError, VarId, Variable};
@@ -416,7 +420,7 @@ impl<'a> Cursor<'a> {
 
     /// Takes the next line; at the end of the text, an error expecting `expected`.
     fn next_line(&mut self, expected: &str) -> Result<&'a str, SasError> {
-        self.line += 1;
+        self.line = self.line.saturating_add(1);
         self.current = self.lines.next();
         match self.current {
             Some(line) => Ok(line),
@@ -534,7 +538,7 @@ impl<'a> Cursor<'a> {
     /// Only blank lines may remain.
     fn end(&mut self) -> Result<(), SasError> {
         for line in self.lines.by_ref() {
-            self.line += 1;
+            self.line = self.line.saturating_add(1);
             if !line.trim().is_empty() {
                 self.current = Some(line);
                 return Err(self.syntax("the end of the file"));
@@ -558,6 +562,7 @@ fn parse_numbers<const N: usize>(line: &str) -> Option<[u32; N]> {
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
     use proptest::prelude::*;

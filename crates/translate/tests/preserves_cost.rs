@@ -345,7 +345,9 @@ fn search_sas(task: &task::Task) -> Option<u64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+    // Failures are saved to, and replayed first from, `tests/preserves_cost.proptest-regressions`
+    // (proptest's default persistence; committed, so every run replays them).
+    #![proptest_config(ProptestConfig::with_cases(2000))]
 
     #[test]
     fn translation_preserves_optimal_cost(seed in any::<u64>()) {

@@ -136,8 +136,10 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
 
     drop(before);
 
+    // The lock and the write go to the library's canonical path: through a symlink or
+    // a relative name, one library is one file with one lock.
     let lock = WriteLock::acquire(&args.out, lock_timeout)?;
-    remove_stale_temporaries(&args.out);
+    remove_stale_temporaries(lock.target());
     let mut library = match &args.library {
         Some(path) => {
             let library = read_library(path)?;
@@ -197,7 +199,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
             }
         }
     }
-    write_durably(&args.out, &library.to_json())?;
+    write_durably(lock.target(), &library.to_json())?;
     drop(lock);
     print!("{log}");
     print!("{}", summary_table(&library));

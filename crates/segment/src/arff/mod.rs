@@ -7,6 +7,10 @@
 //! the header declares only `{None, Something}`, `NONE` in any case, activity labels
 //! outside the declared set) it says in [`ArffWarning`]s.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use std::borrow::Borrow;
 use std::collections::BTreeSet;
 
@@ -151,7 +155,7 @@ impl ArffTable {
                             if first.is_none() {
                                 *first = Some(row.line);
                             }
-                            attribute.values.len() - 1
+                            attribute.values.len().saturating_sub(1)
                         }
                     }),
                 };
@@ -536,10 +540,10 @@ impl HandTable {
     ) -> Result<TableSegments, ArffError> {
         let space = self.fact_space();
         let mut segmenter = Segmenter::new(&[HAND_ID], tree.clone(), min_duration);
-        let (mut count, mut first, mut last) = (0, None, 0.0);
+        let (mut count, mut first, mut last) = (0u64, None, 0.0);
         for frame in frames {
             let frame = frame?;
-            count += 1;
+            count = count.saturating_add(1);
             first.get_or_insert(frame.time);
             last = frame.time;
             segmenter.push(frame.time, &[frame.hand], &hand_state(&space, &frame));
@@ -560,7 +564,9 @@ impl HandTable {
         self.objects
             .binary_search_by(|o| o.as_str().cmp(v))
             .ok()
-            .map(|i| EntityId(i as u32 + 1))
+            // Entity 0 is the hand; the objects follow it.
+            .and_then(|i| u32::try_from(i).ok()?.checked_add(1))
+            .map(EntityId)
     }
 
     /// Row `n` (0-based) as a frame; `previous` is the time of the frame before.
@@ -662,7 +668,7 @@ impl<R: Borrow<ArffRow>, I: Iterator<Item = Result<R, ArffError>>> Iterator
         };
         match &frame {
             Ok(f) => {
-                self.n += 1;
+                self.n = self.n.saturating_add(1);
                 self.previous = Some(f.time);
             }
             Err(_) => self.done = true,
@@ -722,7 +728,7 @@ impl UnknownLabels {
         let activity = map.activity(label);
         if activity.is_none() {
             match self.labels.iter_mut().find(|u| u.label == label) {
-                Some(u) => u.frames += 1,
+                Some(u) => u.frames = u.frames.saturating_add(1),
                 None => self.labels.push(UnknownLabel {
                     label: label.to_string(),
                     frames: 1,

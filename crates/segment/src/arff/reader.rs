@@ -27,6 +27,10 @@
 //! not declare (real files have them): [`ArffTable::dataset`](super::ArffTable::dataset)
 //! and [`ArffTable::hand_frames`](super::ArffTable::hand_frames) say so in warnings.
 
+// A reader of untrusted input (issue 23): no arithmetic that can wrap or panic, no
+// cast that can truncate; each such operation is checked, saturating or proved in range.
+#![deny(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+
 use super::{error, ArffAttribute, ArffError, ArffKind, ArffRow, ArffTable};
 
 /// What Weka reads for a string attribute that a sparse row leaves out: its loader puts
@@ -102,7 +106,7 @@ fn tokenize(line: &str) -> Result<Vec<Token>, TokenError> {
     let mut tokens = Vec::new();
     let mut chars = line.char_indices().peekable();
     while let Some(&(at, c)) = chars.peek() {
-        let column = at + 1;
+        let column = at.saturating_add(1);
         if is_separator(c) {
             chars.next();
             continue;
@@ -144,14 +148,17 @@ fn tokenize(line: &str) -> Result<Vec<Token>, TokenError> {
                             Some((_, d @ '0'..='7')) => {
                                 // Java's octal escape: up to three digits, the first of
                                 // three at most `3`.
-                                let mut code = d as u32 - '0' as u32;
-                                let mut digits = 1;
+                                let mut code = d.to_digit(8).unwrap_or(0);
+                                let mut digits: u8 = 1;
                                 while let Some(&(_, e @ '0'..='7')) = chars.peek() {
                                     if digits == 2 && d > '3' || digits == 3 {
                                         break;
                                     }
-                                    code = code * 8 + (e as u32 - '0' as u32);
-                                    digits += 1;
+                                    // At most three octal digits: below 512.
+                                    code = code
+                                        .saturating_mul(8)
+                                        .saturating_add(e.to_digit(8).unwrap_or(0));
+                                    digits = digits.saturating_add(1);
                                     chars.next();
                                 }
                                 text.push(char::from_u32(code).unwrap_or('\u{fffd}'));
@@ -283,7 +290,7 @@ impl<R: std::io::BufRead> ArffReader<R> {
         match self.input.read_line(&mut self.text) {
             Ok(0) => Ok(false),
             Ok(_) => {
-                self.line += 1;
+                self.line = self.line.saturating_add(1);
                 if self.text.ends_with('\n') {
                     self.text.pop();
                     if self.text.ends_with('\r') {
@@ -293,7 +300,7 @@ impl<R: std::io::BufRead> ArffReader<R> {
                 Ok(true)
             }
             Err(e) => {
-                let line = self.line + 1;
+                let line = self.line.saturating_add(1);
                 let message = if e.kind() == std::io::ErrorKind::InvalidData {
                     "the line is not UTF-8 text".to_string()
                 } else {
@@ -554,7 +561,7 @@ fn nominal(line: usize, name: &str, tokens: &[Token]) -> Result<ArffKind, ArffEr
     for (k, t) in tokens.iter().enumerate().skip(1) {
         match t.kind {
             Kind::Close => {
-                if let Some(extra) = tokens.get(k + 1) {
+                if let Some(extra) = tokens.get(k.saturating_add(1)) {
                     return Err(error(
                         line,
                         extra.column,
@@ -632,13 +639,17 @@ fn dense_row(
     let n = attributes.len();
     // A brace says more about the row than its count of values.
     if let Some((k, t)) = tokens.iter().enumerate().find(|(_, t)| !t.is_text()) {
-        value(line, t, &attributes[k.min(n - 1)])?;
+        // The header has at least one attribute (`@data` needs one).
+        value(line, t, &attributes[k.min(n.saturating_sub(1))])?;
     }
     if tokens.len() != n {
         let (column, field) = if tokens.len() < n {
             (tokens[0].column, attributes[tokens.len()].name.as_str())
         } else {
-            (tokens[n].column, attributes[n - 1].name.as_str())
+            (
+                tokens[n].column,
+                attributes[n.saturating_sub(1)].name.as_str(),
+            )
         };
         return Err(error(
             line,
@@ -679,7 +690,7 @@ fn sparse_row(
             ));
         };
         if t.kind == Kind::Close {
-            k += 1;
+            k = k.saturating_add(1);
             break;
         }
         let index = match (t.kind, t.text.parse::<usize>()) {
@@ -703,7 +714,7 @@ fn sparse_row(
                 "@data",
                 format!(
                     "index {index} is out of range: the header declares {n} attributes, indices 0 to {}",
-                    n - 1
+                    n.saturating_sub(1)
                 ),
             ));
         }
@@ -719,7 +730,7 @@ fn sparse_row(
             ));
         }
         last = Some(index);
-        let v = match tokens.get(k + 1) {
+        let v = match tokens.get(k.saturating_add(1)) {
             Some(v) if v.is_text() => value(line, v, a)?,
             _ => {
                 return Err(error(
@@ -731,7 +742,7 @@ fn sparse_row(
             }
         };
         given[index] = Some(v);
-        k += 2;
+        k = k.saturating_add(2);
     }
     if let Some(extra) = tokens.get(k) {
         return Err(error(
@@ -786,6 +797,7 @@ fn sparse_row(
 }
 
 #[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
 

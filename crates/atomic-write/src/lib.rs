@@ -207,7 +207,10 @@ mod tests {
         .unwrap_err();
         assert_eq!(
             e.to_string(),
-            format!("cannot write {}: disk full; it is unchanged", path.display())
+            format!(
+                "cannot write {}: disk full; it is unchanged",
+                path.display()
+            )
         );
         assert_eq!(std::fs::read_to_string(&path).unwrap(), "old");
         assert_eq!(entries(&dir), ["out.txt"]);

@@ -102,7 +102,7 @@ struct Clock {
 impl Clock {
     fn passed(&mut self) -> bool {
         self.calls = self.calls.wrapping_add(1);
-        self.calls % 256 == 0 && self.deadline.is_some_and(|d| Instant::now() >= d)
+        self.calls.is_multiple_of(256) && self.deadline.is_some_and(|d| Instant::now() >= d)
     }
 }
 

@@ -38,7 +38,7 @@ impl<'l> Watch<'l> {
         }
         let ticks = self.ticks.get().wrapping_add(1);
         self.ticks.set(ticks);
-        if ticks % CHECK_EVERY != 0 {
+        if !ticks.is_multiple_of(CHECK_EVERY) {
             return false;
         }
         self.check()

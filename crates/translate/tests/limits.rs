@@ -1,6 +1,8 @@
 //! Translation under the run's limits (`translate_within`): a grounding that would not
 //! end in any reasonable time, or not fit in memory, stops at the limit instead.
 
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
 use std::time::{Duration, Instant};
 
 use task::{Limit, Limits};

@@ -301,12 +301,23 @@ fn counts_that_overflow_when_summed_are_an_error() {
     let mut value: serde_json::Value = serde_json::from_str(&text).unwrap();
     let operators = value["operators"].as_array_mut().unwrap();
     assert!(operators.len() >= 2);
-    operators[0]["count"] = serde_json::json!(u64::MAX - 1);
+    // The other operators keep their counts; the first takes what is left up to
+    // u64::MAX - 1 and the second 1, so the counts add up to exactly u64::MAX.
+    let rest: u64 = operators[2..]
+        .iter()
+        .map(|o| o["count"].as_u64().unwrap())
+        .sum();
+    operators[0]["count"] = serde_json::json!(u64::MAX - 1 - rest);
     operators[1]["count"] = serde_json::json!(1);
     let fits = serde_json::to_string_pretty(&value).unwrap();
     let read = Library::from_json(&fits).unwrap();
     assert_eq!(read.segments(), u64::MAX);
+    // One more for the second, moved to the end: the running sum is u64::MAX - 1 before
+    // it and passes u64::MAX at it, so the error names its line.
     value["operators"][1]["count"] = serde_json::json!(2);
+    let operators = value["operators"].as_array_mut().unwrap();
+    let second = operators.remove(1);
+    operators.push(second);
     let over = serde_json::to_string_pretty(&value).unwrap();
     let e = Library::from_json(&over).unwrap_err();
     assert_eq!(e.field, "count");
@@ -315,7 +326,8 @@ fn counts_that_overflow_when_summed_are_an_error() {
             .contains("counts add up to more than 18446744073709551615"),
         "{e:?}"
     );
-    let id = value["operators"][1]["id"].as_str().unwrap();
+    let last = value["operators"].as_array().unwrap().len() - 1;
+    let id = value["operators"][last]["id"].as_str().unwrap();
     let line = over.lines().position(|l| l.contains(id)).unwrap() + 1;
     assert_eq!(e.line, line);
 }

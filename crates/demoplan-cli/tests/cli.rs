@@ -2066,6 +2066,34 @@ fn study_refuses_bad_options_before_writing_anything() {
 }
 
 #[test]
+fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
+    let tmp = tempdir("unknown-planner");
+    let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");
+    let problem = tmp.join("p.pddl");
+    let p = demoplan()
+        .args(["problem", "--tower", "cube_1,cube_2", "-o"])
+        .arg(&problem)
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("solve")
+        .arg(&library)
+        .arg(&problem)
+        .args(["--planner", "lama"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("--planner lama: expected demoplan or fast-downward"),
+        "{err}"
+    );
+    assert!(!tmp.join("sas_plan").exists());
+}
+
+#[test]
 fn fast_downward_backends_say_clearly_when_it_is_missing() {
     let tmp = tempdir("fd-missing");
     let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");

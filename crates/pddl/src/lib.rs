@@ -23,19 +23,23 @@
 //! ```
 
 mod ast;
+mod canonical;
 mod check;
 mod error;
 mod lexer;
 mod parser;
 mod plan;
 mod span;
+mod summary;
 mod writer;
 
 pub use ast::*;
+pub use canonical::{canonical_form, Canonical};
 pub use error::{ErrorKind, PddlError};
 pub use parser::PddlFile;
 pub use plan::{parse_plan, write_plan, CostKind, Plan, PlanError, PlanErrorKind, Step};
 pub use span::Span;
+pub use summary::SummaryRow;
 
 /// Parses and checks a domain: its syntax, and that every name it uses is declared.
 pub fn parse_domain(source: &str) -> Result<Domain, PddlError> {

@@ -8,17 +8,46 @@
 //! installed Fast Downward run as a separate program (never linked: it is GPL).
 
 mod fast_downward;
+mod logged;
 mod run;
 
 use std::time::{Duration, Instant};
 
 pub use fast_downward::{parse_log, FastDownward, FdLog};
+pub use logged::{plan_logged, LoggedRun, PlanInput, RunError, StatisticsRecord};
 pub use run::{
     plan_task, translate_checked, translate_checked_until, MemoryProbe, Outcome, PlanRun,
     Translated,
 };
 
 use learn::{domain, levels, DomainOptions, Library};
+
+/// Who plans, by name (`demoplan solve --planner`); a [`Backend`] adds its settings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PlannerName {
+    /// demoplan's own planner, in-process.
+    Demoplan,
+    /// An installed Fast Downward, run as a separate program.
+    FastDownward,
+}
+
+impl PlannerName {
+    /// Every planner, in the order help texts list them.
+    pub const ALL: [PlannerName; 2] = [PlannerName::Demoplan, PlannerName::FastDownward];
+
+    /// The name on the command line: `demoplan` or `fast-downward`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PlannerName::Demoplan => "demoplan",
+            PlannerName::FastDownward => "fast-downward",
+        }
+    }
+
+    /// The planner of a name, if there is one.
+    pub fn from_name(name: &str) -> Option<PlannerName> {
+        PlannerName::ALL.into_iter().find(|p| p.name() == name)
+    }
+}
 
 /// Who plans.
 #[derive(Debug, Clone)]
@@ -171,5 +200,20 @@ pub fn solve(
     Solved {
         levels: results,
         cumulative: start.elapsed(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::PlannerName;
+
+    #[test]
+    fn planner_names_read_back_and_nothing_else_reads() {
+        for planner in PlannerName::ALL {
+            assert_eq!(PlannerName::from_name(planner.name()), Some(planner));
+        }
+        for other in ["", "Demoplan", "fast_downward", "lama"] {
+            assert_eq!(PlannerName::from_name(other), None, "{other}");
+        }
     }
 }

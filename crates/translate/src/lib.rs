@@ -132,6 +132,22 @@ pub fn cost_kind(task: &task::Task) -> pddl::CostKind {
     pddl::CostKind::of_costs(task.operators.iter().map(|o| task.cost(o)))
 }
 
+/// What Fast Downward's translator writes for a task it found unsolvable
+/// ([`Translation::Unsolvable`]): one variable whose goal value no operator reaches.
+pub fn unsolvable_task() -> task::Task {
+    task::Task {
+        variables: vec![task::Variable {
+            name: "var0".into(),
+            value_names: vec!["Atom dummy(val1)".into(), "Atom dummy(val2)".into()],
+        }],
+        mutexes: Vec::new(),
+        initial_state: vec![0],
+        goal: vec![task::Fact::new(task::VarId(0), 1)],
+        operators: Vec::new(),
+        use_costs: false,
+    }
+}
+
 /// Translates a checked domain and problem (see [`pddl::check_problem`]).
 pub fn translate(
     domain: &pddl::Domain,
@@ -215,4 +231,18 @@ pub fn translate_within(
         task: result.task,
         stats,
     }))
+}
+
+#[cfg(test)]
+mod unsolvable_task_tests {
+    #[test]
+    fn the_unsolvable_task_is_valid_and_its_goal_is_out_of_reach() {
+        let task = super::unsolvable_task();
+        assert!(task.validate().is_ok());
+        assert!(task.operators.is_empty());
+        assert!(task
+            .goal
+            .iter()
+            .any(|g| task.initial_state[g.var.index()] != g.value));
+    }
 }

@@ -57,25 +57,9 @@ fn summarise_domain(out: &mut String, path: &Path, d: &pddl::Domain, p: Option<&
         "domain",
         format!("{} ({})", d.name.text, path.display()),
     );
-    let declared: Vec<&str> = d.requirements.iter().map(|r| r.name.as_str()).collect();
-    line(
-        out,
-        "requirements declared",
-        if declared.is_empty() {
-            "(none)".into()
-        } else {
-            declared.join(" ")
-        },
-    );
-    line(out, "requirements used", d.used_requirements(p).join(" "));
-    let mut types: Vec<&str> = d.types.iter().map(|t| t.name.as_str()).collect();
-    types.sort_unstable();
-    types.dedup();
-    line(out, "types", types.len());
-    line(out, "constants", d.constants.len());
-    line(out, "predicates", d.predicates.len());
-    line(out, "functions", d.functions.len());
-    line(out, "actions", d.actions.len());
+    for (key, value) in d.summary(p) {
+        line(out, key, value);
+    }
 }
 
 fn summarise_problem(out: &mut String, path: &Path, p: &pddl::Problem) {
@@ -84,30 +68,7 @@ fn summarise_problem(out: &mut String, path: &Path, p: &pddl::Problem) {
         "problem",
         format!("{} ({})", p.name.text, path.display()),
     );
-    line(out, "objects", p.objects.len());
-    let facts = p
-        .init
-        .iter()
-        .filter(|e| matches!(e, pddl::InitEntry::Fact(_)))
-        .count();
-    line(
-        out,
-        "init",
-        format!("{facts} facts, {} function values", p.init.len() - facts),
-    );
-    let negative = p.goal.iter().filter(|l| !l.positive).count();
-    line(
-        out,
-        "goal",
-        format!("{} literals ({negative} negative)", p.goal.len()),
-    );
-    line(
-        out,
-        "metric",
-        if p.metric.is_some() {
-            "minimize (total-cost)"
-        } else {
-            "(none)"
-        },
-    );
+    for (key, value) in p.summary() {
+        line(out, key, value);
+    }
 }

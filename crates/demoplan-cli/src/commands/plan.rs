@@ -5,7 +5,7 @@ use std::path::Path;
 use std::time::{Duration, Instant};
 
 use crate::cli::PlanArgs;
-use crate::commands::translate::{domain_and_problem, translate_files, Translated};
+use crate::commands::translate::{domain_and_problem, read_parsed};
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::{input, memory, output};
@@ -107,113 +107,53 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         memory_limit_bytes: memory_limit,
         memory_usage: Some(memory::heap_in_use),
     };
-    let mut pddl_files = None;
-    let task = match args.files.as_slice() {
-        [single] if is_sas_file(single) => read_sas(single)?,
+    let mut log = |line: &str| println!("{line}");
+    let (logged, problem_path, pddl_files) = match args.files.as_slice() {
+        [single] if is_sas_file(single) => {
+            let input = slim::PlanInput::Task(read_sas(single)?);
+            let logged = slim::plan_logged(input, &config, &limits, start, &mut log);
+            (logged, single.clone(), None)
+        }
         files => {
-            let (domain, problem) = domain_and_problem(files)?;
-            let translated = translate_files(&domain, &problem, &limits)?;
-            pddl_files = Some((domain, problem));
-            match translated {
-                Translated::Task(task) => task,
-                Translated::Unsolvable => {
-                    println!("Search stopped without finding a solution.");
-                    let report = Report::unsolvable_before_search(start);
-                    report.print();
-                    write_stats(&args, &report)?;
-                    return Ok(ExitCode::UNSOLVABLE);
-                }
-                Translated::Stopped(limit) => return stopped_before_search(&args, start, limit),
-            }
+            let (domain_path, problem_path) = domain_and_problem(files)?;
+            let parsed = read_parsed(&domain_path, &problem_path)?;
+            let input = slim::PlanInput::Pddl {
+                domain: &parsed.domain,
+                problem: &parsed.problem,
+            };
+            let logged = slim::plan_logged(input, &config, &limits, start, &mut log);
+            (
+                logged,
+                problem_path.clone(),
+                Some((domain_path, problem_path)),
+            )
         }
     };
-    let translate_time = start.elapsed();
-
-    println!("Search: {config}");
-    let mut observer = |p: search::Progress| {
-        println!(
-            "f = {}, {} evaluated, {} expanded [t={:.3}s]",
-            p.f,
-            p.evaluated,
-            p.expanded,
-            start.elapsed().as_secs_f64()
-        );
-    };
-    // The heuristic first, so that what building it did (the hill climbing of ipdb())
-    // is reported before the search, as Fast Downward does.
-    let mut heuristic = match config
-        .heuristic
-        .build_with_limits(&task, &limits)
-        .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()))?
-    {
-        search::Built::Heuristic(h) => h,
-        search::Built::Stopped(limit) => return stopped_before_search(&args, start, limit),
-    };
-    if let Some(s) = heuristic.pdb_statistics() {
-        println!("{s}");
-    }
-    let result = match config.engine {
-        search::Engine::AStar => search::astar(&task, &mut heuristic, &limits, Some(&mut observer)),
-    }
-    .map_err(|e| {
-        let code = match e {
-            search::SearchError::CostTooLarge { .. } => ExitCode::UNSUPPORTED,
-            _ => ExitCode::SEARCH_INPUT_ERROR,
-        };
-        Failure::plain(code, e.to_string())
+    let logged = logged.map_err(|e| match e {
+        slim::RunError::Translate(e) => Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!("{}: {e}", problem_path.display()),
+        ),
+        slim::RunError::Search(e @ search::SearchError::CostTooLarge { .. }) => {
+            Failure::plain(ExitCode::UNSUPPORTED, e.to_string())
+        }
+        slim::RunError::Search(e) => Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()),
     })?;
-    let stats = &result.statistics;
-    if let Some(h) = stats.initial_h {
-        println!("Initial heuristic value: {h}");
+    let solved = logged.run.plan_text();
+    if let Some(text) = &solved {
+        output::write_atomically(&args.plan_file, text)?;
+        println!("Plan length: {} step(s).", logged.run.plan.len());
+        println!("Plan cost: {}", logged.run.cost.unwrap_or(0));
     }
-    let (code, plan) = match &result.outcome {
-        search::Outcome::Solved(plan) => {
-            println!("Solution found!");
-            (ExitCode::SUCCESS, Some(plan))
-        }
-        search::Outcome::Unsolvable => {
-            println!("Completely explored state space -- no solution!");
-            (ExitCode::UNSOLVABLE, None)
-        }
-        search::Outcome::TimeLimit => {
-            println!("Time limit reached. Abort search.");
-            (ExitCode::OUT_OF_TIME, None)
-        }
-        search::Outcome::MemoryLimit => {
-            println!("Memory limit has been reached.");
-            (ExitCode::OUT_OF_MEMORY, None)
-        }
-    };
-    if let Some(plan) = plan {
-        for op in &plan.operators {
-            let o = &task.operators[op.index()];
-            println!("{} ({})", o.name, task.cost(o));
-        }
-        let steps = translate::plan_steps(&task, &plan.operators);
-        let text = pddl::write_plan(&steps, plan.cost, translate::cost_kind(&task));
-        output::write_atomically(&args.plan_file, &text)?;
-        println!("Plan length: {} step(s).", plan.operators.len());
-        println!("Plan cost: {}", plan.cost);
+    let peak_memory_kb = memory::peak_rss_kb();
+    print!("{}", logged.closing_statistics(peak_memory_kb));
+    if let Some(path) = &args.stats_json {
+        let record = logged.statistics_record(peak_memory_kb);
+        let text = serde_json::to_string_pretty(&record)
+            .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string()))?;
+        output::write_atomically(path, &format!("{text}\n"))?;
     }
-    let report = Report {
-        outcome: match code {
-            ExitCode::SUCCESS => "solved",
-            ExitCode::UNSOLVABLE => "unsolvable",
-            ExitCode::OUT_OF_TIME => "out_of_time",
-            _ => "out_of_memory",
-        },
-        plan: plan.map(|p| (p.operators.len(), p.cost)),
-        statistics: Some(result.statistics),
-        translate_time,
-        total_time: start.elapsed(),
-        sizes: Some(task.sizes()),
-    };
-    report.print();
-    if plan.is_some() {
-        println!("Solution found.");
-    }
-    write_stats(&args, &report)?;
-    if let (Some(_), true, Some((domain, problem))) = (plan, args.validate, &pddl_files) {
+    if let (Some(_), true, Some((domain, problem))) = (&solved, args.validate, &pddl_files) {
         let invalid = crate::commands::validate::validate_plans(
             domain,
             problem,
@@ -226,37 +166,13 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             ));
         }
     }
-    Ok(code)
-}
-
-/// A run stopped at `limit` before its search began (in translation, or building a
-/// pattern database that does not fit): Fast Downward's line and exit code, the closing
-/// statistics, `--stats-json`.
-fn stopped_before_search(
-    args: &PlanArgs,
-    start: Instant,
-    limit: task::Limit,
-) -> Result<ExitCode, Failure> {
-    let (line, outcome, code) = match limit {
-        task::Limit::Time => (
-            "Time limit reached. Abort search.",
-            "out_of_time",
-            ExitCode::OUT_OF_TIME,
-        ),
-        task::Limit::Memory => (
-            "Memory limit has been reached.",
-            "out_of_memory",
-            ExitCode::OUT_OF_MEMORY,
-        ),
-    };
-    println!("{line}");
-    let report = Report {
-        outcome,
-        ..Report::unsolvable_before_search(start)
-    };
-    report.print();
-    write_stats(args, &report)?;
-    Ok(code)
+    Ok(match logged.run.outcome {
+        slim::Outcome::Solved => ExitCode::SUCCESS,
+        slim::Outcome::TimeLimit => ExitCode::OUT_OF_TIME,
+        slim::Outcome::MemoryLimit => ExitCode::OUT_OF_MEMORY,
+        slim::Outcome::Unsolvable | slim::Outcome::RelaxedUnreachable => ExitCode::UNSOLVABLE,
+        slim::Outcome::Error(_) => ExitCode::CRITICAL_SEARCH_ERROR,
+    })
 }
 
 fn read_sas(path: &Path) -> Result<task::Task, Failure> {
@@ -269,91 +185,6 @@ fn read_sas(path: &Path) -> Result<task::Task, Failure> {
         let location = e.line().map_or(String::new(), |l| format!(":{l}"));
         Failure::plain(code, format!("{}{location}: {e}", path.display()))
     })
-}
-
-/// What a run reports at its end, on the terminal and in `--stats-json`.
-struct Report {
-    outcome: &'static str,
-    plan: Option<(usize, u64)>,
-    statistics: Option<search::Statistics>,
-    translate_time: Duration,
-    total_time: Duration,
-    sizes: Option<task::TaskSizes>,
-}
-
-impl Report {
-    fn unsolvable_before_search(start: Instant) -> Report {
-        Report {
-            outcome: "unsolvable",
-            plan: None,
-            statistics: None,
-            translate_time: start.elapsed(),
-            total_time: start.elapsed(),
-            sizes: None,
-        }
-    }
-
-    /// Fast Downward's closing statistics lines.
-    fn print(&self) {
-        if let Some(s) = &self.statistics {
-            println!("Expanded {} state(s).", s.expanded);
-            println!("Reopened {} state(s).", s.reopened);
-            println!("Evaluated {} state(s).", s.evaluated);
-            println!("Generated {} state(s).", s.generated);
-            println!("Dead ends: {} state(s).", s.dead_ends);
-            println!(
-                "Expanded until last jump: {} state(s).",
-                s.expanded_until_last_jump
-            );
-            println!(
-                "Evaluated until last jump: {} state(s).",
-                s.evaluated_until_last_jump
-            );
-            println!(
-                "Generated until last jump: {} state(s).",
-                s.generated_until_last_jump
-            );
-            println!("Number of registered states: {}", s.registered_states);
-            println!("Search time: {:.6}s", s.search_time.as_secs_f64());
-        }
-        println!("Total time: {:.6}s", self.total_time.as_secs_f64());
-        if let Some(kb) = memory::peak_rss_kb() {
-            println!("Peak memory: {kb} KB");
-        }
-    }
-
-    fn to_json(&self) -> serde_json::Value {
-        let s = self.statistics.as_ref();
-        serde_json::json!({
-            "outcome": self.outcome,
-            "plan_length": self.plan.map(|p| p.0),
-            "plan_cost": self.plan.map(|p| p.1),
-            "expanded": s.map(|s| s.expanded),
-            "reopened": s.map(|s| s.reopened),
-            "evaluated": s.map(|s| s.evaluated),
-            "generated": s.map(|s| s.generated),
-            "dead_ends": s.map(|s| s.dead_ends),
-            "expanded_until_last_jump": s.map(|s| s.expanded_until_last_jump),
-            "registered_states": s.map(|s| s.registered_states),
-            "initial_h": s.and_then(|s| s.initial_h),
-            "search_time_s": s.map(|s| s.search_time.as_secs_f64()),
-            "translate_time_s": self.translate_time.as_secs_f64(),
-            "total_time_s": self.total_time.as_secs_f64(),
-            "peak_memory_kb": memory::peak_rss_kb(),
-            "variables": self.sizes.map(|z| z.variables),
-            "facts": self.sizes.map(|z| z.facts),
-            "operators": self.sizes.map(|z| z.operators),
-        })
-    }
-}
-
-fn write_stats(args: &PlanArgs, report: &Report) -> Result<(), Failure> {
-    if let Some(path) = &args.stats_json {
-        let text = serde_json::to_string_pretty(&report.to_json())
-            .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string()))?;
-        output::write_atomically(path, &format!("{text}\n"))?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]

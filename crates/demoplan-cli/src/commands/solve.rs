@@ -4,7 +4,7 @@ use std::path::Path;
 use std::time::Duration;
 
 use learn::DomainOptions;
-use slim::{Backend, FastDownward, Outcome};
+use slim::{Backend, FastDownward, Outcome, PlannerName};
 
 use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
@@ -30,23 +30,30 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
-    let backend = match args.planner.as_str() {
-        "demoplan" => Backend::Demoplan(search::parse_search(&args.search).map_err(|e| {
-            Failure::plain(
-                ExitCode::SEARCH_INPUT_ERROR,
-                format!("--search {}: {e}", args.search),
-            )
-        })?),
-        "fast-downward" => Backend::FastDownward(
+    let backend = match PlannerName::from_name(&args.planner) {
+        Some(PlannerName::Demoplan) => {
+            Backend::Demoplan(search::parse_search(&args.search).map_err(|e| {
+                Failure::plain(
+                    ExitCode::SEARCH_INPUT_ERROR,
+                    format!("--search {}: {e}", args.search),
+                )
+            })?)
+        }
+        Some(PlannerName::FastDownward) => Backend::FastDownward(
             FastDownward::locate(args.fd.as_deref())
                 .map_err(|e| Failure::plain(ExitCode::USAGE, e))?,
             args.search.clone(),
         ),
-        other => {
+        None => {
+            let names: Vec<&str> = PlannerName::ALL.iter().map(|p| p.name()).collect();
             return Err(Failure::plain(
                 ExitCode::USAGE,
-                format!("--planner {other}: expected demoplan or fast-downward"),
-            ))
+                format!(
+                    "--planner {}: expected {}",
+                    args.planner,
+                    names.join(" or ")
+                ),
+            ));
         }
     };
     let options = DomainOptions {

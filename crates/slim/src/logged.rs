@@ -1,0 +1,411 @@
+//! One planning run that speaks Fast Downward's protocol: the run `demoplan plan` makes
+//! and the Python package's in-process `plan` will make.
+//!
+//! [`plan_logged`] translates (or takes a finite-domain task as read from `output.sas`),
+//! builds the heuristic and searches, all under one [`task::Limits`], and hands every log
+//! line Fast Downward would print (translator sizes, `Search: ...`, the f-layers, the
+//! plan's operators, the outcome) to the caller's `log`, in Fast Downward's order. The
+//! caller prints them; this module does no I/O. [`LoggedRun::closing_statistics`] is the
+//! block Fast Downward ends with, and [`LoggedRun::statistics_record`] the same numbers
+//! as `--stats-json` writes them.
+
+use std::time::{Duration, Instant};
+
+use crate::run::{Outcome, PlanRun};
+
+/// What a run plans on.
+#[derive(Debug)]
+pub enum PlanInput<'a> {
+    /// A parsed and checked PDDL domain and problem, translated by the run.
+    Pddl {
+        /// The domain.
+        domain: &'a pddl::Domain,
+        /// The problem.
+        problem: &'a pddl::Problem,
+    },
+    /// A finite-domain task (Fast Downward's `output.sas`), searched as it is.
+    Task(task::Task),
+}
+
+/// Why a run could not be made (as opposed to how it ended, its [`Outcome`]).
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The PDDL task cannot be translated.
+    #[error(transparent)]
+    Translate(#[from] translate::TranslateError),
+    /// The heuristic cannot be built for this task, or the search cannot run on it.
+    #[error(transparent)]
+    Search(#[from] search::SearchError),
+}
+
+/// A finished run: the [`PlanRun`] every planning run gives, and what Fast Downward's
+/// closing statistics add to it.
+#[derive(Debug, Clone)]
+pub struct LoggedRun {
+    /// Outcome, plan, cost and times.
+    pub run: PlanRun,
+    /// The search's counters; `None` where the run ended before a search.
+    pub statistics: Option<search::Statistics>,
+    /// The searched task's sizes; `None` where the run ended before a search.
+    pub sizes: Option<task::TaskSizes>,
+}
+
+/// Plans `input` with `config` under `limits`, every time measured from `start` (the
+/// start of the process for the command line, so that the one deadline covers
+/// translation, heuristic construction and search). `log` receives each line Fast
+/// Downward would print, without its newline.
+pub fn plan_logged(
+    input: PlanInput<'_>,
+    config: &search::SearchConfig,
+    limits: &task::Limits,
+    start: Instant,
+    log: &mut dyn FnMut(&str),
+) -> Result<LoggedRun, RunError> {
+    let task = match input {
+        PlanInput::Task(task) => task,
+        PlanInput::Pddl { domain, problem } => {
+            let translation = translate::translate_within(domain, problem, limits)?;
+            for line in translation.log().lines() {
+                log(line);
+            }
+            log(&format!(
+                "Translation done! [{:.3}s wall-clock]",
+                start.elapsed().as_secs_f64()
+            ));
+            match translation {
+                translate::Translation::Task(t) => t.task,
+                translate::Translation::Unsolvable { .. } => {
+                    log("Search stopped without finding a solution.");
+                    return Ok(ended_before_search(Outcome::RelaxedUnreachable, start));
+                }
+                translate::Translation::Stopped { limit, .. } => {
+                    return Ok(stopped_before_search(limit, start, log));
+                }
+            }
+        }
+    };
+    let translate_time = start.elapsed();
+
+    log(&format!("Search: {config}"));
+    // The heuristic first, so that what building it did (the hill climbing of ipdb())
+    // is reported before the search, as Fast Downward does.
+    let mut heuristic = match config.heuristic.build_with_limits(&task, limits)? {
+        search::Built::Heuristic(h) => h,
+        search::Built::Stopped(limit) => return Ok(stopped_before_search(limit, start, log)),
+    };
+    if let Some(s) = heuristic.pdb_statistics() {
+        log(&s.to_string());
+    }
+    let heuristic_time = start.elapsed();
+    let mut observer = |p: search::Progress| {
+        log(&format!(
+            "f = {}, {} evaluated, {} expanded [t={:.3}s]",
+            p.f,
+            p.evaluated,
+            p.expanded,
+            start.elapsed().as_secs_f64()
+        ));
+    };
+    let result = match config.engine {
+        search::Engine::AStar => search::astar(&task, &mut heuristic, limits, Some(&mut observer)),
+    }?;
+    let statistics = result.statistics;
+    if let Some(h) = statistics.initial_h {
+        log(&format!("Initial heuristic value: {h}"));
+    }
+    let mut run = PlanRun::ended(match &result.outcome {
+        search::Outcome::Solved(_) => Outcome::Solved,
+        search::Outcome::Unsolvable => Outcome::Unsolvable,
+        search::Outcome::TimeLimit => Outcome::TimeLimit,
+        search::Outcome::MemoryLimit => Outcome::MemoryLimit,
+    });
+    log(outcome_line(&run.outcome));
+    if let search::Outcome::Solved(plan) = &result.outcome {
+        for op in &plan.operators {
+            let o = &task.operators[op.index()];
+            log(&format!("{} ({})", o.name, task.cost(o)));
+        }
+        run.plan = translate::plan_steps(&task, &plan.operators);
+        run.cost = Some(plan.cost);
+        run.cost_kind = translate::cost_kind(&task);
+    }
+    run.expansions = Some(statistics.expanded);
+    run.generated = Some(statistics.generated);
+    run.translate_time = translate_time;
+    run.heuristic_time = heuristic_time.saturating_sub(translate_time);
+    run.search_time = statistics.search_time;
+    run.total_time = start.elapsed();
+    Ok(LoggedRun {
+        run,
+        statistics: Some(statistics),
+        sizes: Some(task.sizes()),
+    })
+}
+
+/// The line Fast Downward prints when its search ends this way.
+fn outcome_line(outcome: &Outcome) -> &'static str {
+    match outcome {
+        Outcome::Solved => "Solution found!",
+        Outcome::Unsolvable => "Completely explored state space -- no solution!",
+        Outcome::TimeLimit => "Time limit reached. Abort search.",
+        Outcome::MemoryLimit => "Memory limit has been reached.",
+        Outcome::RelaxedUnreachable => "Search stopped without finding a solution.",
+        Outcome::Error(_) => "Search stopped with an error.",
+    }
+}
+
+fn ended_before_search(outcome: Outcome, start: Instant) -> LoggedRun {
+    let mut run = PlanRun::ended(outcome);
+    run.translate_time = start.elapsed();
+    run.total_time = run.translate_time;
+    LoggedRun {
+        run,
+        statistics: None,
+        sizes: None,
+    }
+}
+
+/// A run stopped at `limit` before its search began (in translation, or building a
+/// pattern database that does not fit): Fast Downward's line for that limit.
+fn stopped_before_search(
+    limit: task::Limit,
+    start: Instant,
+    log: &mut dyn FnMut(&str),
+) -> LoggedRun {
+    let outcome = Outcome::limit(limit);
+    log(outcome_line(&outcome));
+    ended_before_search(outcome, start)
+}
+
+impl LoggedRun {
+    /// Fast Downward's closing block: the search's counters (where it searched), total
+    /// time, peak memory (where the caller measured it), and `Solution found.` after a
+    /// plan. One line each, every line ending in a newline.
+    pub fn closing_statistics(&self, peak_memory_kb: Option<u64>) -> String {
+        let mut out = String::new();
+        let mut line = |text: String| {
+            out.push_str(&text);
+            out.push('\n');
+        };
+        if let Some(s) = &self.statistics {
+            line(format!("Expanded {} state(s).", s.expanded));
+            line(format!("Reopened {} state(s).", s.reopened));
+            line(format!("Evaluated {} state(s).", s.evaluated));
+            line(format!("Generated {} state(s).", s.generated));
+            line(format!("Dead ends: {} state(s).", s.dead_ends));
+            line(format!(
+                "Expanded until last jump: {} state(s).",
+                s.expanded_until_last_jump
+            ));
+            line(format!(
+                "Evaluated until last jump: {} state(s).",
+                s.evaluated_until_last_jump
+            ));
+            line(format!(
+                "Generated until last jump: {} state(s).",
+                s.generated_until_last_jump
+            ));
+            line(format!(
+                "Number of registered states: {}",
+                s.registered_states
+            ));
+            line(format!("Search time: {:.6}s", s.search_time.as_secs_f64()));
+        }
+        line(format!(
+            "Total time: {:.6}s",
+            self.run.total_time.as_secs_f64()
+        ));
+        if let Some(kb) = peak_memory_kb {
+            line(format!("Peak memory: {kb} KB"));
+        }
+        if self.run.outcome == Outcome::Solved {
+            line("Solution found.".to_string());
+        }
+        out
+    }
+
+    /// The run's numbers as `demoplan plan --stats-json` writes them.
+    pub fn statistics_record(&self, peak_memory_kb: Option<u64>) -> StatisticsRecord {
+        let s = self.statistics.as_ref();
+        let seconds = |d: Duration| d.as_secs_f64();
+        StatisticsRecord {
+            dead_ends: s.map(|s| s.dead_ends),
+            evaluated: s.map(|s| s.evaluated),
+            expanded: s.map(|s| s.expanded),
+            expanded_until_last_jump: s.map(|s| s.expanded_until_last_jump),
+            facts: self.sizes.map(|z| z.facts),
+            generated: s.map(|s| s.generated),
+            initial_h: s.and_then(|s| s.initial_h),
+            operators: self.sizes.map(|z| z.operators),
+            outcome: match self.run.outcome {
+                Outcome::Solved => "solved",
+                Outcome::RelaxedUnreachable | Outcome::Unsolvable => "unsolvable",
+                Outcome::TimeLimit => "out_of_time",
+                Outcome::MemoryLimit => "out_of_memory",
+                Outcome::Error(_) => "error",
+            },
+            peak_memory_kb,
+            plan_cost: self.run.cost,
+            plan_length: self.run.cost.map(|_| self.run.plan.len()),
+            registered_states: s.map(|s| s.registered_states),
+            reopened: s.map(|s| s.reopened),
+            search_time_s: s.map(|s| seconds(s.search_time)),
+            total_time_s: seconds(self.run.total_time),
+            translate_time_s: seconds(self.run.translate_time),
+            variables: self.sizes.map(|z| z.variables),
+        }
+    }
+}
+
+/// A run's numbers for a machine: `null` where the run ended before producing one.
+/// The fields are declared in alphabetical order, the order the file has always had.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct StatisticsRecord {
+    /// Dead ends the search met.
+    pub dead_ends: Option<u64>,
+    /// States evaluated.
+    pub evaluated: Option<u64>,
+    /// States expanded.
+    pub expanded: Option<u64>,
+    /// States expanded before the last f-layer.
+    pub expanded_until_last_jump: Option<u64>,
+    /// Facts of the searched task.
+    pub facts: Option<usize>,
+    /// Successors generated.
+    pub generated: Option<u64>,
+    /// The heuristic value of the initial state.
+    pub initial_h: Option<u64>,
+    /// Operators of the searched task.
+    pub operators: Option<usize>,
+    /// `solved`, `unsolvable`, `out_of_time` or `out_of_memory`.
+    pub outcome: &'static str,
+    /// Peak memory in KiB, where measured.
+    pub peak_memory_kb: Option<u64>,
+    /// The plan's cost.
+    pub plan_cost: Option<u64>,
+    /// The plan's steps.
+    pub plan_length: Option<usize>,
+    /// States registered.
+    pub registered_states: Option<u64>,
+    /// States reopened.
+    pub reopened: Option<u64>,
+    /// The search's time in seconds.
+    pub search_time_s: Option<f64>,
+    /// The whole run in seconds.
+    pub total_time_s: f64,
+    /// Translation (or reading the task) in seconds.
+    pub translate_time_s: f64,
+    /// Variables of the searched task.
+    pub variables: Option<usize>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DOMAIN: &str = "(define (domain switch) (:requirements :strips)
+        (:predicates (on) (off))
+        (:action flip :parameters () :precondition (off) :effect (and (on) (not (off)))))";
+
+    fn run(problem: &str, search: &str) -> (Result<LoggedRun, RunError>, Vec<String>) {
+        let domain = pddl::parse_domain(DOMAIN).unwrap();
+        let problem = pddl::parse_problem(problem).unwrap();
+        let config = search::parse_search(search).unwrap();
+        let mut lines = Vec::new();
+        let result = plan_logged(
+            PlanInput::Pddl {
+                domain: &domain,
+                problem: &problem,
+            },
+            &config,
+            &task::Limits::default(),
+            Instant::now(),
+            &mut |l| lines.push(l.to_string()),
+        );
+        (result, lines)
+    }
+
+    #[test]
+    fn a_solved_run_logs_fast_downwards_lines_in_order_and_gives_a_unit_cost_plan() {
+        let (result, lines) = run(
+            "(define (problem p) (:domain switch) (:init (off)) (:goal (on)))",
+            "astar(blind())",
+        );
+        let logged = result.unwrap();
+        let position = |prefix: &str| {
+            lines
+                .iter()
+                .position(|l| l.starts_with(prefix))
+                .unwrap_or_else(|| panic!("no line {prefix} in {lines:?}"))
+        };
+        assert!(position("Translation done!") < position("Search: astar(blind())"));
+        assert!(position("Search:") < position("Solution found!"));
+        assert!(position("Solution found!") < position("flip (1)"));
+        assert_eq!(logged.run.outcome, Outcome::Solved);
+        assert_eq!(
+            logged.run.plan_text().unwrap(),
+            "(flip)\n; cost = 1 (unit cost)\n"
+        );
+        let closing = logged.closing_statistics(Some(7));
+        assert!(closing.starts_with("Expanded 1 state(s).\n"), "{closing}");
+        assert!(
+            closing.ends_with("Peak memory: 7 KB\nSolution found.\n"),
+            "{closing}"
+        );
+        let record = logged.statistics_record(None);
+        assert_eq!(
+            (record.outcome, record.plan_cost, record.plan_length),
+            ("solved", Some(1), Some(1))
+        );
+        assert_eq!(record.operators, Some(1));
+    }
+
+    #[test]
+    fn a_goal_the_relaxation_cannot_reach_ends_before_search() {
+        let (result, lines) = run(
+            "(define (problem p) (:domain switch) (:init (on)) (:goal (off)))",
+            "astar(blind())",
+        );
+        let logged = result.unwrap();
+        assert_eq!(logged.run.outcome, Outcome::RelaxedUnreachable);
+        assert_eq!(
+            lines.last().map(String::as_str),
+            Some("Search stopped without finding a solution.")
+        );
+        assert!(!lines.iter().any(|l| l.starts_with("Search:")));
+        assert!(logged.statistics.is_none());
+        let closing = logged.closing_statistics(None);
+        assert!(closing.starts_with("Total time: "), "{closing}");
+        assert_eq!(logged.statistics_record(None).outcome, "unsolvable");
+    }
+
+    #[test]
+    fn a_deadline_already_passed_stops_the_run_at_its_time_limit() {
+        let domain = pddl::parse_domain(DOMAIN).unwrap();
+        let problem =
+            pddl::parse_problem("(define (problem p) (:domain switch) (:init (off)) (:goal (on)))")
+                .unwrap();
+        let start = Instant::now();
+        let limits = task::Limits {
+            deadline: Some(start),
+            ..task::Limits::default()
+        };
+        let mut lines = Vec::new();
+        let logged = plan_logged(
+            PlanInput::Pddl {
+                domain: &domain,
+                problem: &problem,
+            },
+            &search::parse_search("astar(blind())").unwrap(),
+            &limits,
+            start,
+            &mut |l| lines.push(l.to_string()),
+        )
+        .unwrap();
+        assert_eq!(logged.run.outcome, Outcome::TimeLimit);
+        assert!(lines
+            .iter()
+            .any(|l| l == "Time limit reached. Abort search."));
+        assert_eq!(logged.statistics_record(None).outcome, "out_of_time");
+    }
+}

@@ -2065,9 +2065,8 @@ fn study_refuses_bad_options_before_writing_anything() {
     }
 }
 
-#[test]
-fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
-    let tmp = tempdir("unknown-planner");
+/// The slim crate's widening library, and a problem (a tower of two) written into `tmp`.
+fn widening_library_and_problem(tmp: &Path) -> (PathBuf, PathBuf) {
     let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");
     let problem = tmp.join("p.pddl");
     let p = demoplan()
@@ -2076,6 +2075,13 @@ fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
         .output()
         .unwrap();
     assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    (library, problem)
+}
+
+#[test]
+fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
+    let tmp = tempdir("unknown-planner");
+    let (library, problem) = widening_library_and_problem(&tmp);
     let out = demoplan()
         .current_dir(&tmp)
         .arg("solve")
@@ -2096,14 +2102,7 @@ fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
 #[test]
 fn fast_downward_backends_say_clearly_when_it_is_missing() {
     let tmp = tempdir("fd-missing");
-    let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");
-    let problem = tmp.join("p.pddl");
-    let p = demoplan()
-        .args(["problem", "--tower", "cube_1,cube_2", "-o"])
-        .arg(&problem)
-        .output()
-        .unwrap();
-    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let (library, problem) = widening_library_and_problem(&tmp);
     let solve: Vec<std::ffi::OsString> = vec![
         "solve".into(),
         library.into(),

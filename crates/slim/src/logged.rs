@@ -23,8 +23,9 @@ pub enum PlanInput<'a> {
         /// The problem.
         problem: &'a pddl::Problem,
     },
-    /// A finite-domain task (Fast Downward's `output.sas`), searched as it is.
-    Task(task::Task),
+    /// A finite-domain task (Fast Downward's `output.sas`, or one translated before),
+    /// searched as it is.
+    Task(&'a task::Task),
 }
 
 /// Why a run could not be made (as opposed to how it ended, its [`Outcome`]).
@@ -61,6 +62,7 @@ pub fn plan_logged(
     start: Instant,
     log: &mut dyn FnMut(&str),
 ) -> Result<LoggedRun, RunError> {
+    let translated;
     let task = match input {
         PlanInput::Task(task) => task,
         PlanInput::Pddl { domain, problem } => {
@@ -73,13 +75,20 @@ pub fn plan_logged(
                 start.elapsed().as_secs_f64()
             ));
             match translation {
-                translate::Translation::Task(t) => t.task,
+                translate::Translation::Task(t) => {
+                    translated = t.task;
+                    &translated
+                }
                 translate::Translation::Unsolvable { .. } => {
                     log("Search stopped without finding a solution.");
-                    return Ok(ended_before_search(Outcome::RelaxedUnreachable, start));
+                    return Ok(ended_before_search(
+                        Outcome::RelaxedUnreachable,
+                        start.elapsed(),
+                        start,
+                    ));
                 }
                 translate::Translation::Stopped { limit, .. } => {
-                    return Ok(stopped_before_search(limit, start, log));
+                    return Ok(stopped_before_search(limit, start.elapsed(), start, log));
                 }
             }
         }
@@ -89,9 +98,11 @@ pub fn plan_logged(
     log(&format!("Search: {config}"));
     // The heuristic first, so that what building it did (the hill climbing of ipdb())
     // is reported before the search, as Fast Downward does.
-    let mut heuristic = match config.heuristic.build_with_limits(&task, limits)? {
+    let mut heuristic = match config.heuristic.build_with_limits(task, limits)? {
         search::Built::Heuristic(h) => h,
-        search::Built::Stopped(limit) => return Ok(stopped_before_search(limit, start, log)),
+        search::Built::Stopped(limit) => {
+            return Ok(stopped_before_search(limit, translate_time, start, log))
+        }
     };
     if let Some(s) = heuristic.pdb_statistics() {
         log(&s.to_string());
@@ -107,7 +118,7 @@ pub fn plan_logged(
         ));
     };
     let result = match config.engine {
-        search::Engine::AStar => search::astar(&task, &mut heuristic, limits, Some(&mut observer)),
+        search::Engine::AStar => search::astar(task, &mut heuristic, limits, Some(&mut observer)),
     }?;
     let statistics = result.statistics;
     if let Some(h) = statistics.initial_h {
@@ -125,9 +136,9 @@ pub fn plan_logged(
             let o = &task.operators[op.index()];
             log(&format!("{} ({})", o.name, task.cost(o)));
         }
-        run.plan = translate::plan_steps(&task, &plan.operators);
+        run.plan = translate::plan_steps(task, &plan.operators);
         run.cost = Some(plan.cost);
-        run.cost_kind = translate::cost_kind(&task);
+        run.cost_kind = translate::cost_kind(task);
     }
     run.expansions = Some(statistics.expanded);
     run.generated = Some(statistics.generated);
@@ -154,10 +165,13 @@ fn outcome_line(outcome: &Outcome) -> &'static str {
     }
 }
 
-fn ended_before_search(outcome: Outcome, start: Instant) -> LoggedRun {
+/// A run that ended before its search: translation took `translate_time` (all of the
+/// run when it ended there), heuristic construction the rest.
+fn ended_before_search(outcome: Outcome, translate_time: Duration, start: Instant) -> LoggedRun {
     let mut run = PlanRun::ended(outcome);
-    run.translate_time = start.elapsed();
-    run.total_time = run.translate_time;
+    run.total_time = start.elapsed();
+    run.translate_time = translate_time;
+    run.heuristic_time = run.total_time.saturating_sub(translate_time);
     LoggedRun {
         run,
         statistics: None,
@@ -169,12 +183,13 @@ fn ended_before_search(outcome: Outcome, start: Instant) -> LoggedRun {
 /// pattern database that does not fit): Fast Downward's line for that limit.
 fn stopped_before_search(
     limit: task::Limit,
+    translate_time: Duration,
     start: Instant,
     log: &mut dyn FnMut(&str),
 ) -> LoggedRun {
     let outcome = Outcome::limit(limit);
     log(outcome_line(&outcome));
-    ended_before_search(outcome, start)
+    ended_before_search(outcome, translate_time, start)
 }
 
 impl LoggedRun {
@@ -307,30 +322,34 @@ mod tests {
         (:predicates (on) (off))
         (:action flip :parameters () :precondition (off) :effect (and (on) (not (off)))))";
 
-    fn run(problem: &str, search: &str) -> (Result<LoggedRun, RunError>, Vec<String>) {
+    const SWITCH_ON: &str = "(define (problem p) (:domain switch) (:init (off)) (:goal (on)))";
+
+    fn run_within(
+        problem: &str,
+        limits: &task::Limits,
+        start: Instant,
+    ) -> (Result<LoggedRun, RunError>, Vec<String>) {
         let domain = pddl::parse_domain(DOMAIN).unwrap();
         let problem = pddl::parse_problem(problem).unwrap();
-        let config = search::parse_search(search).unwrap();
+        let config = search::parse_search("astar(blind())").unwrap();
         let mut lines = Vec::new();
-        let result = plan_logged(
-            PlanInput::Pddl {
-                domain: &domain,
-                problem: &problem,
-            },
-            &config,
-            &task::Limits::default(),
-            Instant::now(),
-            &mut |l| lines.push(l.to_string()),
-        );
+        let input = PlanInput::Pddl {
+            domain: &domain,
+            problem: &problem,
+        };
+        let result = plan_logged(input, &config, limits, start, &mut |l| {
+            lines.push(l.to_string())
+        });
         (result, lines)
+    }
+
+    fn run(problem: &str) -> (Result<LoggedRun, RunError>, Vec<String>) {
+        run_within(problem, &task::Limits::default(), Instant::now())
     }
 
     #[test]
     fn a_solved_run_logs_fast_downwards_lines_in_order_and_gives_a_unit_cost_plan() {
-        let (result, lines) = run(
-            "(define (problem p) (:domain switch) (:init (off)) (:goal (on)))",
-            "astar(blind())",
-        );
+        let (result, lines) = run(SWITCH_ON);
         let logged = result.unwrap();
         let position = |prefix: &str| {
             lines
@@ -347,7 +366,11 @@ mod tests {
             "(flip)\n; cost = 1 (unit cost)\n"
         );
         let closing = logged.closing_statistics(Some(7));
-        assert!(closing.starts_with("Expanded 1 state(s).\n"), "{closing}");
+        let expanded = logged.statistics.map(|s| s.expanded).unwrap();
+        assert!(
+            closing.starts_with(&format!("Expanded {expanded} state(s).\n")),
+            "{closing}"
+        );
         assert!(
             closing.ends_with("Peak memory: 7 KB\nSolution found.\n"),
             "{closing}"
@@ -362,10 +385,8 @@ mod tests {
 
     #[test]
     fn a_goal_the_relaxation_cannot_reach_ends_before_search() {
-        let (result, lines) = run(
-            "(define (problem p) (:domain switch) (:init (on)) (:goal (off)))",
-            "astar(blind())",
-        );
+        let (result, lines) =
+            run("(define (problem p) (:domain switch) (:init (on)) (:goal (off)))");
         let logged = result.unwrap();
         assert_eq!(logged.run.outcome, Outcome::RelaxedUnreachable);
         assert_eq!(
@@ -381,27 +402,13 @@ mod tests {
 
     #[test]
     fn a_deadline_already_passed_stops_the_run_at_its_time_limit() {
-        let domain = pddl::parse_domain(DOMAIN).unwrap();
-        let problem =
-            pddl::parse_problem("(define (problem p) (:domain switch) (:init (off)) (:goal (on)))")
-                .unwrap();
         let start = Instant::now();
         let limits = task::Limits {
             deadline: Some(start),
             ..task::Limits::default()
         };
-        let mut lines = Vec::new();
-        let logged = plan_logged(
-            PlanInput::Pddl {
-                domain: &domain,
-                problem: &problem,
-            },
-            &search::parse_search("astar(blind())").unwrap(),
-            &limits,
-            start,
-            &mut |l| lines.push(l.to_string()),
-        )
-        .unwrap();
+        let (result, lines) = run_within(SWITCH_ON, &limits, start);
+        let logged = result.unwrap();
         assert_eq!(logged.run.outcome, Outcome::TimeLimit);
         assert!(lines
             .iter()

@@ -162,50 +162,22 @@ pub fn translate_checked_until(
 
 /// Searches a translated task until `deadline`: builds the heuristic (timed as
 /// [`PlanRun::heuristic_time`]), then runs the search (timed as
-/// [`PlanRun::search_time`]); `total_time` is both.
+/// [`PlanRun::search_time`]); `total_time` is both. [`plan_logged`] without its log;
+/// a search that cannot run is [`Outcome::Error`].
+///
+/// [`plan_logged`]: crate::plan_logged
 pub fn plan_task(
     task: &task::Task,
     config: &search::SearchConfig,
     deadline: Option<Instant>,
 ) -> PlanRun {
-    let start = Instant::now();
     let limits = search::SearchLimits {
         deadline,
         ..search::SearchLimits::default()
     };
-    let mut heuristic = match config.heuristic.build_with_limits(task, &limits) {
-        Ok(search::Built::Heuristic(h)) => h,
-        Ok(search::Built::Stopped(limit)) => {
-            let mut run = PlanRun::ended(Outcome::limit(limit));
-            run.heuristic_time = start.elapsed();
-            run.total_time = run.heuristic_time;
-            return run;
-        }
-        Err(e) => return PlanRun::ended(Outcome::Error(e.to_string())),
-    };
-    let heuristic_time = start.elapsed();
-    let searched = match config.engine {
-        search::Engine::AStar => search::astar(task, &mut heuristic, &limits, None),
-    };
-    let result = match searched {
-        Ok(r) => r,
-        Err(e) => return PlanRun::ended(Outcome::Error(e.to_string())),
-    };
-    let mut run = PlanRun::ended(match &result.outcome {
-        search::Outcome::Solved(_) => Outcome::Solved,
-        search::Outcome::Unsolvable => Outcome::Unsolvable,
-        search::Outcome::TimeLimit => Outcome::TimeLimit,
-        search::Outcome::MemoryLimit => Outcome::MemoryLimit,
-    });
-    if let search::Outcome::Solved(plan) = &result.outcome {
-        run.plan = translate::plan_steps(task, &plan.operators);
-        run.cost = Some(plan.cost);
-        run.cost_kind = translate::cost_kind(task);
+    let input = crate::PlanInput::Task(task);
+    match crate::plan_logged(input, config, &limits, Instant::now(), &mut |_| {}) {
+        Ok(logged) => logged.run,
+        Err(e) => PlanRun::ended(Outcome::Error(e.to_string())),
     }
-    run.expansions = Some(result.statistics.expanded);
-    run.generated = Some(result.statistics.generated);
-    run.heuristic_time = heuristic_time;
-    run.total_time = start.elapsed();
-    run.search_time = run.total_time.saturating_sub(heuristic_time);
-    run
 }

@@ -110,8 +110,14 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let mut log = |line: &str| println!("{line}");
     let (logged, problem_path, pddl_files) = match args.files.as_slice() {
         [single] if is_sas_file(single) => {
-            let input = slim::PlanInput::Task(read_sas(single)?);
-            let logged = slim::plan_logged(input, &config, &limits, start, &mut log);
+            let task = read_sas(single)?;
+            let logged = slim::plan_logged(
+                slim::PlanInput::Task(&task),
+                &config,
+                &limits,
+                start,
+                &mut log,
+            );
             (logged, single.clone(), None)
         }
         files => {

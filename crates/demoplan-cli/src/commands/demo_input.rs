@@ -106,17 +106,7 @@ pub fn config(path: Option<&Path>) -> Result<GroundingConfig, Failure> {
 /// A decision tree file.
 pub fn decision_tree(path: &Path) -> Result<DecisionTree, Failure> {
     let text = input::read_text(path)?;
-    DecisionTree::from_json(&text).map_err(|e| {
-        text_failure(
-            path,
-            &text,
-            "segment::tree",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
-    })
+    DecisionTree::from_json(&text).map_err(|e| tree_failure(path, &text, &e))
 }
 
 /// The activity tree: the file's, or the paper's Table 1.
@@ -124,19 +114,23 @@ pub fn activity_tree(path: Option<&Path>) -> Result<ActivityTree, Failure> {
     let Some(path) = path else {
         return Ok(ActivityTree::table_one());
     };
-    let tree = decision_tree(path)?;
-    ActivityTree::new(tree).map_err(|e| {
+    ActivityTree::new(decision_tree(path)?).map_err(|e| {
         let text = std::fs::read_to_string(path).unwrap_or_default();
-        text_failure(
-            path,
-            &text,
-            "segment::tree",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
+        tree_failure(path, &text, &e)
     })
+}
+
+/// The failure for an error in the tree file at `path`, shown on its line of `text`.
+fn tree_failure(path: &Path, text: &str, e: &segment::TreeError) -> Failure {
+    text_failure(
+        path,
+        text,
+        "segment::tree",
+        e.line,
+        e.column,
+        &e.field,
+        &e.message,
+    )
 }
 
 /// Whether a path names an ARFF table ([`segment::is_arff_file`]: by extension or content).

@@ -221,7 +221,8 @@ mod tests {
         assert_eq!(kind, SourceKind::Native);
         match open_recording(&path, kind, None) {
             Err(OpenError::Recording(e)) => assert_eq!(e.line, 1),
-            other => panic!("expected a recording error, got {other:?}"),
+            Err(other) => panic!("expected a recording error, got {other:?}"),
+            Ok(_) => panic!("a recording of version 9 was opened"),
         }
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -2,6 +2,8 @@
 //! phases: a recording counted once however often it is given, and one that vanished from
 //! the library between the phases segmented again.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use std::path::{Path, PathBuf};
 
 use grounding::GroundingConfig;

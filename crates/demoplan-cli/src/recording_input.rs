@@ -12,53 +12,13 @@ use miette::{Diagnostic, LabeledSpan, MietteError, SourceCode, SourceSpan, SpanC
 use crate::diagnostic::{render, Failure};
 use crate::exit::ExitCode;
 
-/// Read buffer for recordings: large, so that reading is not a system call per frame.
+/// Read buffer for re-reading a recording's offending line.
 const BUFFER: usize = 1 << 20;
 
-/// What a file on the command line holds.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SourceKind {
-    /// A native recording (JSON Lines).
-    Native,
-    /// A Unity VR playback log.
-    Unity,
-    /// A ROS bag: a ROS 1 bag, an MCAP file or a ROS 2 bag folder.
-    Bag(import::Format),
-}
-
-/// Tells a Unity log from a native recording by its content (a recording's header names
-/// its format on the first line). A missing file is a command line error (36).
-pub fn source_kind(path: &Path) -> Result<SourceKind, Failure> {
-    if path.is_dir() {
-        return match import::ros::bag_format(path, &[]) {
-            Some(format) => Ok(SourceKind::Bag(format)),
-            None => Err(Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "{} is a folder, not a recording (a ROS 2 bag folder has a metadata.yaml)",
-                    path.display()
-                ),
-            )),
-        };
-    }
-    let mut start = Vec::with_capacity(4096);
-    File::open(path)
-        .and_then(|f| f.take(4096).read_to_end(&mut start))
-        .map_err(|e| {
-            Failure::plain(
-                ExitCode::USAGE,
-                format!("cannot read {}: {e}", path.display()),
-            )
-        })?;
-    if let Some(format) = import::ros::bag_format(path, &start) {
-        return Ok(SourceKind::Bag(format));
-    }
-    let native = String::from_utf8_lossy(&start).contains(recording::FORMAT_NAME);
-    Ok(if !native && import::unity::looks_like_unity_log(&start) {
-        SourceKind::Unity
-    } else {
-        SourceKind::Native
-    })
+/// What a file on the command line holds, by its content ([`import::SourceKind::of`]). A
+/// missing file or a folder that is no bag is a command line error (36).
+pub fn source_kind(path: &Path) -> Result<import::SourceKind, Failure> {
+    import::SourceKind::of(path).map_err(|e| open_failure(path, e))
 }
 
 /// The mapping for a source of `format`: the `--mapping` file over the format's
@@ -87,13 +47,6 @@ pub fn mapping(path: Option<&Path>, format: import::Format) -> Result<import::Ma
     })
 }
 
-/// A Unity log as an import source: each pass reopens the file.
-pub fn unity_source(
-    path: &Path,
-) -> import::unity::UnityLog<impl FnMut() -> std::io::Result<File> + '_> {
-    import::unity::UnityLog::new(move || File::open(path))
-}
-
 /// The failure for an import error of the source at `path`: an input error (31) naming
 /// the file, the place in it, the entity and the field.
 pub fn import_failure(path: &Path, error: &import::ImportError) -> Failure {
@@ -112,47 +65,28 @@ pub fn import_failure(path: &Path, error: &import::ImportError) -> Failure {
     }
 }
 
-/// Opens a recording and reads its header. A Unity log or a bag (told by its content)
-/// is imported into memory first, with the `--mapping` file or the format's defaults.
-/// A missing file is a command line error (36); a malformed header or source an input
-/// error (31).
-pub fn open(
-    path: &Path,
-    mapping_file: Option<&Path>,
-) -> Result<recording::Reader<Box<dyn BufRead>>, Failure> {
-    if let SourceKind::Bag(format) = source_kind(path)? {
-        let mapping = mapping(mapping_file, format)?;
-        let id = path
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_else(|| "imported".to_string());
-        let mut source =
-            import::ros::RosBag::open(path, &mapping).map_err(|e| import_failure(path, &e))?;
-        let (bytes, _, _) = import::import(&mut source, &mapping, &id, Vec::new())
-            .map_err(|e| import_failure(path, &e))?;
-        let input: Box<dyn BufRead> = Box::new(std::io::Cursor::new(bytes));
-        return recording::Reader::new(input).map_err(|e| recording_failure(path, &e));
+/// Opens a recording and reads its header ([`import::open_recording`]): a Unity log or a
+/// bag is imported into memory first, with the `--mapping` file (read only for such a
+/// source) or the format's defaults. A missing file is a command line error (36); a
+/// malformed header, source or mapping an input error (31).
+pub fn open(path: &Path, mapping_file: Option<&Path>) -> Result<import::RecordingReader, Failure> {
+    let kind = source_kind(path)?;
+    let mapping = match kind.format() {
+        Some(format) => Some(mapping(mapping_file, format)?),
+        None => None,
+    };
+    import::open_recording(path, kind, mapping.as_ref()).map_err(|e| open_failure(path, e))
+}
+
+/// The failure for a recording that could not be opened.
+pub fn open_failure(path: &Path, error: import::OpenError) -> Failure {
+    match error {
+        import::OpenError::Folder(_) | import::OpenError::Read { .. } => {
+            Failure::plain(ExitCode::USAGE, error.to_string())
+        }
+        import::OpenError::Import(e) => import_failure(path, &e),
+        import::OpenError::Recording(e) => recording_failure(path, &e),
     }
-    if source_kind(path)? == SourceKind::Unity {
-        let mapping = mapping(mapping_file, import::Format::Unity)?;
-        let id = path
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_else(|| "imported".to_string());
-        let mut source = unity_source(path);
-        let (bytes, _, _) = import::import(&mut source, &mapping, &id, Vec::new())
-            .map_err(|e| import_failure(path, &e))?;
-        let input: Box<dyn BufRead> = Box::new(std::io::Cursor::new(bytes));
-        return recording::Reader::new(input).map_err(|e| recording_failure(path, &e));
-    }
-    let file = File::open(path).map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!("cannot read {}: {e}", path.display()),
-        )
-    })?;
-    let input: Box<dyn BufRead> = Box::new(BufReader::with_capacity(BUFFER, file));
-    recording::Reader::new(input).map_err(|e| recording_failure(path, &e))
 }
 
 /// The failure for an error reading the recording at `path`.

@@ -53,6 +53,7 @@ mod axes;
 mod error;
 mod glob;
 mod mapping;
+mod open;
 pub mod ros;
 /// Counts the bytes a reader reads, for progress (bags use it too).
 pub use bags::CountingReader;
@@ -68,3 +69,4 @@ pub use mapping::{
     native_name, strip_prefix, BagMapping, ContactSource, EntityRule, Format, GraspSource, Mapping,
     MappingError, ObjectListFields, Origin, Resolved, Role, CUBE_SIZE, HAND_SIZE, OTHER_SIZE,
 };
+pub use open::{open_recording, recording_id, OpenError, RecordingReader, SourceKind};

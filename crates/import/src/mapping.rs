@@ -347,6 +347,19 @@ fn default_labels() -> BTreeMap<String, String> {
 }
 
 impl Mapping {
+    /// Where the value of `labels.LABEL` starts in the text of a mapping file (1-based
+    /// line and column), for a message about that label: a [`Mapping`] keeps no
+    /// positions. `None` when the text has no such label.
+    pub fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
+        #[derive(Deserialize)]
+        struct Labels {
+            #[serde(default)]
+            labels: BTreeMap<String, toml::Spanned<String>>,
+        }
+        let file: Labels = toml::from_str(text).ok()?;
+        Some(position(text, file.labels.get(label)?.span().start))
+    }
+
     /// The defaults for a format: entity kinds from name parts (`Controller_L`,
     /// `LeftHand`, `Hand_L`, `left_hand`: left hand; the same with `R`/`Right`: right hand; `Cube`; `Table`;
     /// `Camera`, `Origin`, `Marker` ignored), 5 cm cubes, the label map. Unity: Unity axes,

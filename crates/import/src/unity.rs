@@ -51,6 +51,13 @@ pub fn looks_like_unity_log(start: &[u8]) -> bool {
         && (text.contains("\"playbackTimestepMilliseconds\"") || text.contains("\"log\""))
 }
 
+/// The Unity log in the file at `path`, reopened for each pass.
+pub fn log_file(
+    path: &std::path::Path,
+) -> UnityLog<impl FnMut() -> std::io::Result<std::fs::File> + '_> {
+    UnityLog::new(move || std::fs::File::open(path))
+}
+
 /// A Unity playback log, reopened by `open` for each pass.
 pub struct UnityLog<F> {
     open: F,

@@ -354,6 +354,88 @@ pub fn paper_goal_tower(n: usize) -> Vec<String> {
     (1..=n + 1).map(|i| format!("cube_{i}")).collect()
 }
 
+/// A goal tower, bottom first, and the name its problem gets.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Tower {
+    /// The cubes, bottom first.
+    pub cubes: Vec<String>,
+    /// The problem's name: `tower-A-B-...` or `paper-goal-N`.
+    pub name: String,
+}
+
+/// Why a tower is no goal for a scene.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum TowerError {
+    /// The paper has goals 1 to 5 only.
+    #[error("the paper has goals 1 to 5")]
+    NoPaperGoal(usize),
+    /// Fewer than two cubes.
+    #[error("a tower needs at least two cubes, listed bottom first")]
+    TooShort,
+    /// A cube the scene does not have.
+    #[error("the tower names `{cube}`, which is not a cube of the scene (cubes: {})", .cubes.join(", "))]
+    UnknownCube {
+        /// The cube named.
+        cube: String,
+        /// The scene's cubes.
+        cubes: Vec<String>,
+    },
+    /// A cube named twice.
+    #[error("the tower names `{0}` twice")]
+    Twice(String),
+}
+
+impl Tower {
+    /// A tower from a comma-separated list of cube names, bottom first (names are
+    /// lowercased, as all PDDL names are).
+    pub fn listed(list: &str) -> Tower {
+        let cubes: Vec<String> = list
+            .split(',')
+            .map(|c| c.trim().to_ascii_lowercase())
+            .collect();
+        let name = format!("tower-{}", cubes.join("-"));
+        Tower { cubes, name }
+    }
+
+    /// The paper's goal `n` (1 to 5), reconstructed ([`paper_goal_tower`]).
+    pub fn paper_goal(n: usize) -> Result<Tower, TowerError> {
+        if !(1..=5).contains(&n) {
+            return Err(TowerError::NoPaperGoal(n));
+        }
+        Ok(Tower {
+            cubes: paper_goal_tower(n),
+            name: format!("paper-goal-{n}"),
+        })
+    }
+
+    /// The tower's problem on `scene`, as PDDL text with a comment that lists the tower:
+    /// refused when the tower has fewer than two cubes, or names a cube the scene does
+    /// not have, or one twice.
+    pub fn problem_text(&self, scene: &Scene) -> Result<String, TowerError> {
+        if self.cubes.len() < 2 {
+            return Err(TowerError::TooShort);
+        }
+        for (i, c) in self.cubes.iter().enumerate() {
+            if !scene.has_cube(c) {
+                return Err(TowerError::UnknownCube {
+                    cube: c.clone(),
+                    cubes: scene.cubes.clone(),
+                });
+            }
+            if self.cubes[..i].contains(c) {
+                return Err(TowerError::Twice(c.clone()));
+            }
+        }
+        let goal = tower_goal(scene, &self.cubes);
+        Ok(format!(
+            "; demoplan problem: a tower of {} cubes, bottom first: {}.\n{}",
+            self.cubes.len(),
+            self.cubes.join(", "),
+            problem(&self.name, "demoplan", scene, &goal)
+        ))
+    }
+}
+
 fn ground_atoms(p: Predicate, args: &[String]) -> Vec<Atom> {
     let pn = pddl_predicate(p);
     let terms: Vec<Term> = args.iter().map(|a| Term::Object(name(a))).collect();
@@ -436,6 +518,35 @@ pub fn per_type(operators: &[Ranked<'_>]) -> [usize; 5] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn towers_are_checked_against_the_scene() {
+        let scene = Scene::cubes_on_table(3);
+        let cube = |i: usize| scene.cubes[i].clone();
+        let listed = Tower::listed(&format!(" {} ,{}", cube(0).to_uppercase(), cube(1)));
+        assert_eq!(listed.cubes, [cube(0), cube(1)]);
+        assert_eq!(listed.name, format!("tower-{}-{}", cube(0), cube(1)));
+        let text = listed.problem_text(&scene).unwrap();
+        assert!(text.starts_with("; demoplan problem: a tower of 2 cubes, bottom first:"));
+        assert!(
+            text.contains(&format!("(ontop {} {})", cube(1), cube(0))),
+            "{text}"
+        );
+        assert_eq!(
+            Tower::listed(&cube(0)).problem_text(&scene),
+            Err(TowerError::TooShort)
+        );
+        assert_eq!(
+            Tower::listed(&format!("{},{}", cube(0), cube(0))).problem_text(&scene),
+            Err(TowerError::Twice(cube(0)))
+        );
+        assert!(matches!(
+            Tower::listed(&format!("{},nope", cube(0))).problem_text(&scene),
+            Err(TowerError::UnknownCube { cube, .. }) if cube == "nope"
+        ));
+        assert_eq!(Tower::paper_goal(6), Err(TowerError::NoPaperGoal(6)));
+        assert_eq!(Tower::paper_goal(2).unwrap().cubes.len(), 3);
+    }
     use crate::operator::{Operator, ParamType};
 
     /// A distinct operator of a type: `k` tells them apart (the hand moves or not, and

@@ -27,6 +27,7 @@
 mod cards;
 mod domain;
 mod hash;
+mod inputs;
 mod library;
 mod listing;
 mod operator;
@@ -36,9 +37,11 @@ mod timeline;
 pub use cards::{cards_markdown, cards_text, domain_text, summary_table};
 pub use domain::{
     action, domain, domain_name, levels, operator_subset, paper_goal_tower, pddl_predicate,
-    per_type, problem, tower_goal, DomainOptions, Level, Scene, DEFAULT_CUBES, DEFAULT_HANDS,
+    per_type, problem, tower_goal, DomainOptions, Level, Scene, Tower, TowerError, DEFAULT_CUBES,
+    DEFAULT_HANDS,
 };
 pub use hash::{stable_hash, StableHasher};
+pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};
 pub use library::{
     cost, display_name, Added, Entry, Library, LibraryError, Provenance, Ranked, RecordingInfo,
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION,
@@ -46,6 +49,6 @@ pub use library::{
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
 pub use pipeline::{
     activities, add_frames, recording_hash, segment_frames, segment_reader, segment_with, Grouping,
-    Observer, Segmented,
+    HandsGrounded, Observer, Segmented, StateAt,
 };
 pub use timeline::{activity_color, timeline, Signals};

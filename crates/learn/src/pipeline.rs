@@ -52,6 +52,55 @@ pub trait Observer {
 /// Sees nothing.
 impl Observer for () {}
 
+/// Keeps the grounded state of one frame (`wanted`, 0-based): a scene taken from a
+/// recording.
+#[derive(Debug, Clone)]
+pub struct StateAt {
+    /// The frame wanted.
+    pub wanted: u64,
+    /// Its state, once grounded.
+    pub state: Option<grounding::State>,
+}
+
+impl Observer for StateAt {
+    fn grounded(&mut self, g: &GroundedFrame<'_>) {
+        if g.index == self.wanted {
+            self.state = Some(g.state.clone());
+        }
+    }
+}
+
+/// Keeps every grounded frame's hand facts, to be joined with per-frame labels such as
+/// the simulator's truth ([`HandsGrounded::labelled`]).
+#[derive(Debug, Clone, Default)]
+pub struct HandsGrounded {
+    /// Per grounded frame: its index and the facts of each hand.
+    pub frames: Vec<(u64, Vec<grounding::HandFacts>)>,
+}
+
+impl HandsGrounded {
+    /// Each hand of each frame with its label: `labels` per frame index, per hand
+    /// (frames without labels are left out).
+    pub fn labelled<'a>(
+        &'a self,
+        labels: &'a [Vec<Activity>],
+    ) -> impl Iterator<Item = (grounding::HandFacts, Activity)> + 'a {
+        self.frames.iter().flat_map(move |(index, hands)| {
+            let frame_labels = usize::try_from(*index)
+                .ok()
+                .and_then(|i| labels.get(i))
+                .map_or(&[][..], Vec::as_slice);
+            hands.iter().copied().zip(frame_labels.iter().copied())
+        })
+    }
+}
+
+impl Observer for HandsGrounded {
+    fn grounded(&mut self, g: &GroundedFrame<'_>) {
+        self.frames.push((g.index, g.hands.to_vec()));
+    }
+}
+
 /// Grounds and segments frames drawn by `next` (which fills the frame and says whether
 /// there was one) of a recording with this header: the pipeline both [`segment_reader`]
 /// and [`segment_frames`] run. Memory is bounded by the grounder's window and the

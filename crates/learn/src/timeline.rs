@@ -48,18 +48,16 @@ const OBJECT_COLORS: [Color; 8] = [
     Color(23, 190, 207),
 ];
 const INK: Color = Color(34, 34, 34);
-/// A truth label that names no activity.
-const UNKNOWN: Color = Color::BLACK;
 /// The speed panel's top is the fastest frame's speed, within these bounds (m/s).
 const SPEED_SCALE: (f32, f32) = (0.3, 3.0);
 
 /// The timeline of a segmented recording whose frames `signals` saw; `truth` (per frame,
-/// per hand, an activity's name) adds a band row of the simulator's truth per hand.
+/// per hand, the activity) adds a band row of the simulator's truth per hand.
 /// `source` names where the recording came from, in the title.
 pub fn timeline(
     s: &Segmented,
     signals: &Signals,
-    truth: Option<&[Vec<String>]>,
+    truth: Option<&[Vec<Activity>]>,
     config: &GroundingConfig,
     source: &str,
 ) -> Timeline {
@@ -181,25 +179,25 @@ pub fn timeline(
 
 /// The runs of one truth label of hand `hand` as bands (frames without a label for the
 /// hand are Idle).
-fn truth_bands(times: &[f64], truth: &[Vec<String>], hand: usize) -> Vec<Band> {
-    let mut bands: Vec<(f64, f64, &str)> = Vec::new();
-    for (&t, names) in times.iter().zip(truth) {
-        let name = names.get(hand).map_or("Idle", String::as_str);
+fn truth_bands(times: &[f64], truth: &[Vec<Activity>], hand: usize) -> Vec<Band> {
+    let mut bands: Vec<(f64, f64, Activity)> = Vec::new();
+    for (&t, activities) in times.iter().zip(truth) {
+        let activity = activities.get(hand).copied().unwrap_or(Activity::Idle);
         match bands.last_mut() {
-            Some(last) if last.2 == name => last.1 = t,
+            Some(last) if last.2 == activity => last.1 = t,
             Some(last) => {
                 last.1 = t;
-                bands.push((t, t, name));
+                bands.push((t, t, activity));
             }
-            None => bands.push((t, t, name)),
+            None => bands.push((t, t, activity)),
         }
     }
     bands
         .into_iter()
-        .map(|(start, end, name)| Band {
+        .map(|(start, end, activity)| Band {
             start,
             end,
-            color: Activity::from_name(name).map_or(UNKNOWN, activity_color),
+            color: activity_color(activity),
         })
         .collect()
 }
@@ -211,14 +209,18 @@ mod tests {
     #[test]
     fn truth_runs_become_bands_that_meet() {
         let times = [0.0, 0.1, 0.2, 0.3];
-        let truth: Vec<Vec<String>> = ["Reach", "Reach", "Take", "Pour"]
-            .iter()
-            .map(|n| vec![n.to_string()])
-            .collect();
+        let truth: Vec<Vec<Activity>> = vec![
+            vec![Activity::Reach],
+            vec![Activity::Reach],
+            vec![Activity::Take],
+            // A frame without the hand: Idle.
+            vec![],
+        ];
         let bands = truth_bands(&times, &truth, 0);
         let spans: Vec<(f64, f64)> = bands.iter().map(|b| (b.start, b.end)).collect();
         assert_eq!(spans, [(0.0, 0.2), (0.2, 0.3), (0.3, 0.3)]);
         assert_eq!(bands[0].color, activity_color(Activity::Reach));
-        assert_eq!(bands[2].color, UNKNOWN);
+        assert_eq!(bands[1].color, activity_color(Activity::Take));
+        assert_eq!(bands[2].color, activity_color(Activity::Idle));
     }
 }

@@ -43,17 +43,19 @@
 
 mod arff;
 mod c45;
+mod check;
 pub mod evaluate;
 mod labels;
 mod segmenter;
 mod tree;
 
 pub use arff::{
-    dataset, is_arff_text, is_hand_state, read_arff, ArffAttribute, ArffError, ArffKind,
-    ArffReader, ArffRow, ArffTable, ArffWarning, FrameActivities, HandFrames, HandTable,
+    dataset, is_arff_file, is_arff_text, is_hand_state, read_arff, ArffAttribute, ArffError,
+    ArffKind, ArffReader, ArffRow, ArffTable, ArffWarning, FrameActivities, HandFrames, HandTable,
     HandTableFrames, LabelledFrame, TableSegments, UnknownLabels, WEKA_DUMMY_STRING,
 };
 pub use c45::{add_errors, Case, Dataset, C45};
+pub use check::{learn_activity_tree, Confusion, LearnedTree};
 pub use labels::{LabelMap, LabelMapError, UnknownLabel};
 pub use segmenter::{Segment, Segmenter};
 pub use tree::{

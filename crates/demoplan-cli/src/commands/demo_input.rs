@@ -2,16 +2,14 @@
 //! trees and ARFF tables (errors with file, line and field, exit 31), and running
 //! grounding and segmentation over a recording.
 
-use std::fmt::Write as _;
 use std::fs::File;
 use std::io::BufReader;
-use std::io::Read as _;
 use std::path::{Path, PathBuf};
 
 use grounding::GroundingConfig;
 use learn::Segmented;
 use miette::NamedSource;
-use recording::Header;
+use recording::{Activity, Header};
 use segment::{ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame};
 
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
@@ -108,17 +106,7 @@ pub fn config(path: Option<&Path>) -> Result<GroundingConfig, Failure> {
 /// A decision tree file.
 pub fn decision_tree(path: &Path) -> Result<DecisionTree, Failure> {
     let text = input::read_text(path)?;
-    DecisionTree::from_json(&text).map_err(|e| {
-        text_failure(
-            path,
-            &text,
-            "segment::tree",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
-    })
+    DecisionTree::from_json(&text).map_err(|e| tree_failure(path, &text, &e))
 }
 
 /// The activity tree: the file's, or the paper's Table 1.
@@ -126,42 +114,28 @@ pub fn activity_tree(path: Option<&Path>) -> Result<ActivityTree, Failure> {
     let Some(path) = path else {
         return Ok(ActivityTree::table_one());
     };
-    let tree = decision_tree(path)?;
-    ActivityTree::new(tree).map_err(|e| {
+    ActivityTree::new(decision_tree(path)?).map_err(|e| {
         let text = std::fs::read_to_string(path).unwrap_or_default();
-        text_failure(
-            path,
-            &text,
-            "segment::tree",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
+        tree_failure(path, &text, &e)
     })
 }
 
-/// Whether a path names an ARFF table: by its extension `.arff`, or by its content
-/// (`segment::is_arff_text` on the file's first 64 KiB), since recognisers' tables often
-/// ship as `.txt`. A file that cannot be read is not ARFF here; reading it later says why.
+/// The failure for an error in the tree file at `path`, shown on its line of `text`.
+fn tree_failure(path: &Path, text: &str, e: &segment::TreeError) -> Failure {
+    text_failure(
+        path,
+        text,
+        "segment::tree",
+        e.line,
+        e.column,
+        &e.field,
+        &e.message,
+    )
+}
+
+/// Whether a path names an ARFF table ([`segment::is_arff_file`]: by extension or content).
 pub fn is_arff(path: &Path) -> bool {
-    if path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("arff"))
-    {
-        return true;
-    }
-    let Ok(file) = std::fs::File::open(path) else {
-        return false;
-    };
-    let mut start = Vec::with_capacity(4096);
-    if std::io::Read::take(file, 64 * 1024)
-        .read_to_end(&mut start)
-        .is_err()
-    {
-        return false;
-    }
-    segment::is_arff_text(&String::from_utf8_lossy(&start))
+    segment::is_arff_file(path)
 }
 
 /// The label map: the defaults, with the `[labels]` table of the mapping file on top
@@ -182,7 +156,7 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
     .map_err(|e| {
         // The mapping keeps no positions: find the label's value in the file again.
         let text = std::fs::read_to_string(path).unwrap_or_default();
-        let (line, column) = label_position(&text, &e.label).unwrap_or((0, 0));
+        let (line, column) = import::Mapping::label_position(&text, &e.label).unwrap_or((0, 0));
         text_failure(
             path,
             &text,
@@ -193,19 +167,6 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
             &e.to_string(),
         )
     })
-}
-
-/// Where the value of `labels.LABEL` starts in a mapping file (1-based line and column).
-fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
-    #[derive(serde::Deserialize)]
-    struct Labels {
-        #[serde(default)]
-        labels: std::collections::BTreeMap<String, toml::Spanned<String>>,
-    }
-    let file: Labels = toml::from_str(text).ok()?;
-    let offset = file.labels.get(label)?.span().start;
-    let line = text[..offset.min(text.len())].matches('\n').count() + 1;
-    Some((line, offset - line_start(text, line)? + 1))
 }
 
 /// An ARFF file opened for reading a row at a time: its header read and checked.
@@ -222,16 +183,9 @@ pub fn arff_reader(path: &Path) -> Result<ArffReader<BufReader<File>>, Failure> 
 /// A whole ARFF table in memory, for what needs every row at once (C4.5 on a data set
 /// that is not a hand-state table).
 pub fn arff_table(path: &Path) -> Result<segment::ArffTable, Failure> {
-    let mut reader = arff_reader(path)?;
-    let rows = reader
-        .by_ref()
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| arff_failure(path, &e))?;
-    Ok(segment::ArffTable {
-        relation: reader.relation().to_string(),
-        attributes: reader.attributes().to_vec(),
-        rows,
-    })
+    arff_reader(path)?
+        .into_table()
+        .map_err(|e| arff_failure(path, &e))
 }
 
 /// The failure for an ARFF error, shown on its line of the file. The file is read again
@@ -305,102 +259,18 @@ pub fn warn(path: &Path, warnings: &[segment::ArffWarning]) {
     }
 }
 
-/// What `learn` reads from its arguments: recordings and ARFF tables as given, and every
-/// recording in a folder (native `.jsonl`, Unity logs and ARFF by content), sorted by name. The
-/// simulator's ground truth (`*.truth.jsonl`) and its `simulation.json` are skipped,
-/// also when given by name (a glob such as `demos/*.jsonl` names the truth files), and
-/// what was skipped is said on standard error. No recording at all is a command line
-/// error.
+/// What `learn` reads from its arguments ([`learn::learning_inputs`]: folders expanded,
+/// the simulator's files skipped); what was skipped is said on standard error. No
+/// recording at all is a command line error (36).
 pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
-    fn simulator_file(name: &str) -> bool {
-        name.ends_with(".truth.jsonl") || name == "simulation.json"
-    }
-    let name_of = |p: &Path| {
-        p.file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_default()
-    };
-    let mut out = Vec::new();
-    let mut skipped_given = Vec::new();
-    for path in paths {
-        if !path.is_dir() {
-            if simulator_file(&name_of(path)) {
-                skipped_given.push(path.display().to_string());
-            } else {
-                out.push(path.clone());
-            }
-            continue;
-        }
-        let entries = std::fs::read_dir(path).map_err(|e| {
-            Failure::plain(
-                ExitCode::USAGE,
-                format!("cannot read folder {}: {e}", path.display()),
-            )
-        })?;
-        let mut files = Vec::new();
-        for entry in entries {
-            let entry = entry.map_err(|e| {
-                Failure::plain(
-                    ExitCode::USAGE,
-                    format!("cannot read folder {}: {e}", path.display()),
-                )
-            })?;
-            if entry.file_type().is_ok_and(|t| t.is_file()) {
-                files.push(entry.path());
-            }
-        }
-        files.sort();
-        let (mut found, mut truth, mut others) = (0, 0, Vec::new());
-        for file in files {
-            let name = name_of(&file);
-            if simulator_file(&name) {
-                truth += 1;
-            } else if name.ends_with(".jsonl")
-                || is_arff(&file)
-                || (name.ends_with(".json")
-                    && recording_input::source_kind(&file)? == recording_input::SourceKind::Unity)
-            {
-                found += 1;
-                out.push(file);
-            } else {
-                others.push(name);
-            }
-        }
-        if found == 0 {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "{} holds no recording (native .jsonl, a Unity log, or an ARFF table)",
-                    path.display()
-                ),
-            ));
-        }
-        let mut note = format!("{}: {found} recording(s)", path.display());
-        if truth > 0 {
-            let _ = write!(
-                note,
-                "; skipped {truth} file(s) of the simulator (*.truth.jsonl, simulation.json)"
-            );
-        }
-        if !others.is_empty() {
-            let _ = write!(note, "; skipped, not recordings: {}", others.join(", "));
-        }
+    let inputs = learn::learning_inputs(paths).map_err(|e| match e {
+        learn::InputsError::Open(e) => recording_input::open_failure(&PathBuf::new(), e),
+        e => Failure::plain(ExitCode::USAGE, e.to_string()),
+    })?;
+    for note in &inputs.notes {
         eprintln!("{note}");
     }
-    if !skipped_given.is_empty() {
-        eprintln!(
-            "skipped {} file(s) of the simulator, not recordings: {}",
-            skipped_given.len(),
-            skipped_given.join(", ")
-        );
-    }
-    if out.is_empty() {
-        return Err(Failure::plain(
-            ExitCode::USAGE,
-            "no recording to learn from (the simulator's *.truth.jsonl and simulation.json are not recordings)",
-        ));
-    }
-    Ok(out)
+    Ok(inputs.files)
 }
 
 /// A recording or an ARFF hand-state table (by [`is_arff`]) segmented; a table's states
@@ -442,8 +312,8 @@ pub fn truth_path(recording: &Path) -> PathBuf {
     recording.with_file_name(format!("{stem}.truth.jsonl"))
 }
 
-/// Reads the ground truth of a recording: per frame and hand, the activity's name.
-pub fn read_truth(recording: &Path, header: &Header) -> Result<Vec<Vec<String>>, Failure> {
+/// Reads the ground truth of a recording: per frame and hand, the activity.
+pub fn read_truth(recording: &Path, header: &Header) -> Result<Vec<Vec<Activity>>, Failure> {
     let path = truth_path(recording);
     let file = std::fs::File::open(&path).map_err(|e| {
         Failure::plain(
@@ -463,11 +333,6 @@ pub fn read_truth(recording: &Path, header: &Header) -> Result<Vec<Vec<String>>,
     })?;
     Ok(frames
         .iter()
-        .map(|f| {
-            f.hands
-                .iter()
-                .map(|h| h.activity.name().to_string())
-                .collect()
-        })
+        .map(|f| f.hands.iter().map(|h| h.activity).collect())
         .collect())
 }

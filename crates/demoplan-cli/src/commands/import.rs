@@ -10,7 +10,8 @@ use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::output;
 use crate::progress::BytesBar;
-use crate::recording_input::{self, SourceKind};
+use crate::recording_input;
+use import::SourceKind;
 
 /// Sources this large show a progress bar on a terminal.
 const PROGRESS_FROM: u64 = 16 << 20;
@@ -54,10 +55,7 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     // The mapping of each source format met (a file's keys over that format's defaults).
     let mut mappings: BTreeMap<&'static str, import::Mapping> = BTreeMap::new();
     for (_, kind, _, _) in &plan {
-        let format = match kind {
-            SourceKind::Bag(format) => *format,
-            _ => import::Format::Unity,
-        };
+        let format = kind.format().unwrap_or(import::Format::Unity);
         if !mappings.contains_key(format.name()) {
             let mapping = recording_input::mapping(args.mapping.as_deref(), format)?;
             mappings.insert(format.name(), mapping);

@@ -1,13 +1,10 @@
 //! The operator library on the command line: `learn`, `operators`, `domain`, `problem`.
 
-use std::fmt::Write as _;
-use std::io::Read;
 use std::path::Path;
 
 pub use learn::{cards_markdown, cards_text, domain_text, summary_table};
 use learn::{
-    levels, operator_subset, paper_goal_tower, per_type, tower_goal, Added, DomainOptions, Library,
-    RecordingInfo, Scene, StableHasher,
+    levels, operator_subset, per_type, Batch, DomainOptions, Library, Scene, Tower, TowerError,
 };
 
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
@@ -34,29 +31,16 @@ pub fn read_library(path: &Path) -> Result<Library, Failure> {
     })
 }
 
-/// The content hash of a file, read in pieces.
+/// The content hash of a file ([`learn::content_hash`]).
 fn file_hash(path: &Path) -> Result<String, Failure> {
-    let mut file = std::fs::File::open(path).map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!("cannot read {}: {e}", path.display()),
-        )
-    })?;
-    let mut hasher = StableHasher::new();
-    let mut buffer = vec![0u8; 1 << 20];
-    loop {
-        let n = file.read(&mut buffer).map_err(|e| {
+    std::fs::File::open(path)
+        .and_then(learn::content_hash)
+        .map_err(|e| {
             Failure::plain(
                 ExitCode::USAGE,
                 format!("cannot read {}: {e}", path.display()),
             )
-        })?;
-        if n == 0 {
-            break;
-        }
-        hasher.write(&buffer[..n]);
-    }
-    Ok(format!("{:016x}", hasher.finish()))
+        })
 }
 
 /// The lambda of `--lambda` and the grouping of `--activities` must be the library's.
@@ -88,14 +72,6 @@ fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), 
     Ok(())
 }
 
-/// A recording given to `learn`: its content hash and, unless the library already had
-/// it when first read, its segments.
-struct Input<'a> {
-    path: &'a Path,
-    hash: String,
-    segmented: Option<learn::Segmented>,
-}
-
 /// Learning in two phases, so that concurrent learners of one library lose no counts and
 /// wait for each other only briefly: first the slow part, grounding and segmenting the
 /// recordings, without a lock; then, holding the output's [`WriteLock`], reading the
@@ -121,19 +97,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let segment =
         |path: &Path| demo_input::segment_file(path, args.mapping.as_deref(), &config, &tree);
     let files = demo_input::recordings(&args.files)?;
-    let mut inputs: Vec<Input<'_>> = Vec::with_capacity(files.len());
-    for path in &files {
-        let hash = file_hash(path)?;
-        let known = before.as_ref().is_some_and(|l| l.has_recording(&hash))
-            || inputs.iter().any(|i| i.hash == hash);
-        let segmented = if known { None } else { Some(segment(path)?) };
-        inputs.push(Input {
-            path,
-            hash,
-            segmented,
-        });
-    }
-
+    let batch = Batch::prepare(&files, before.as_ref(), file_hash, segment)?;
     drop(before);
 
     // The lock and the write go to the library's canonical path: through a symlink or
@@ -153,52 +117,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
                 .unwrap_or_default(),
         ),
     };
-    let mut log = String::new();
-    for input in inputs {
-        let path = input.path;
-        let counted = if library.has_recording(&input.hash) {
-            Added::AlreadyCounted
-        } else {
-            // Known at the first look, gone now (the library was replaced meanwhile).
-            let segmented = match input.segmented {
-                Some(s) => s,
-                None => segment(path)?,
-            };
-            let info = RecordingInfo {
-                hash: input.hash,
-                id: segmented.header.id.clone(),
-                participant: segmented.header.participant.clone(),
-                source: path.display().to_string(),
-                frames: segmented.frames,
-                segments: 0,
-            };
-            library.add_recording(
-                info,
-                &segmented.header,
-                &segmented.space,
-                &segmented.segments,
-            )
-        };
-        match counted {
-            Added::Counted {
-                segments,
-                new_operators,
-            } => {
-                let _ = writeln!(
-                    log,
-                    "{}: {segments} activities, {new_operators} new operator(s)",
-                    path.display()
-                );
-            }
-            Added::AlreadyCounted => {
-                let _ = writeln!(
-                    log,
-                    "{}: already in the library (same content), not counted again",
-                    path.display()
-                );
-            }
-        }
-    }
+    let log = batch.add_to(&mut library, segment)?;
     write_durably(lock.target(), &library.to_json())?;
     drop(lock);
     print!("{log}");
@@ -289,7 +208,7 @@ fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
     let config = demo_input::config(args.config.as_deref())?;
     let tree = segment::ActivityTree::table_one();
     let wanted = args.frame.unwrap_or(0);
-    let mut at = StateAt {
+    let mut at = learn::StateAt {
         wanted,
         state: None,
     };
@@ -311,37 +230,11 @@ fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
     ))
 }
 
-/// Keeps the grounded state of one frame.
-struct StateAt {
-    wanted: u64,
-    state: Option<grounding::State>,
-}
-
-impl learn::Observer for StateAt {
-    fn grounded(&mut self, g: &grounding::GroundedFrame<'_>) {
-        if g.index == self.wanted {
-            self.state = Some(g.state.clone());
-        }
-    }
-}
-
 pub fn problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
     let scene = scene(&args)?;
-    let (tower, name): (Vec<String>, String) = match (&args.tower, args.paper_goal) {
-        (Some(list), None) => {
-            let tower: Vec<String> = list
-                .split(',')
-                .map(|c| c.trim().to_ascii_lowercase())
-                .collect();
-            (tower.clone(), format!("tower-{}", tower.join("-")))
-        }
-        (None, Some(n)) if (1..=5).contains(&n) => (paper_goal_tower(n), format!("paper-goal-{n}")),
-        (None, Some(n)) => {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!("--paper-goal {n}: the paper has goals 1 to 5"),
-            ))
-        }
+    let tower = match (&args.tower, args.paper_goal) {
+        (Some(list), None) => Ok(Tower::listed(list)),
+        (None, Some(n)) => Tower::paper_goal(n),
         _ => {
             return Err(Failure::plain(
                 ExitCode::USAGE,
@@ -349,36 +242,17 @@ pub fn problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
             ))
         }
     };
-    if tower.len() < 2 {
-        return Err(Failure::plain(
-            ExitCode::USAGE,
-            "a tower needs at least two cubes, listed bottom first: --tower c1,c2",
-        ));
-    }
-    for (i, c) in tower.iter().enumerate() {
-        if !scene.has_cube(c) {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "the tower names `{c}`, which is not a cube of the scene (cubes: {})",
-                    scene.cubes.join(", ")
-                ),
-            ));
-        }
-        if tower[..i].contains(c) {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!("the tower names `{c}` twice"),
-            ));
-        }
-    }
-    let goal = tower_goal(&scene, &tower);
-    let text = format!(
-        "; demoplan problem: a tower of {} cubes, bottom first: {}.\n{}",
-        tower.len(),
-        tower.join(", "),
-        learn::problem(&name, "demoplan", &scene, &goal)
-    );
+    let text = tower
+        .and_then(|t| Ok((t.problem_text(&scene)?, t.name)))
+        .map_err(|e| {
+            let message = match &e {
+                TowerError::NoPaperGoal(n) => format!("--paper-goal {n}: {e}"),
+                TowerError::TooShort => format!("{e}: --tower c1,c2"),
+                _ => e.to_string(),
+            };
+            Failure::plain(ExitCode::USAGE, message)
+        });
+    let (text, name) = text?;
     write_atomically(&args.out, &text)?;
     println!("wrote {} ({name})", args.out.display());
     Ok(ExitCode::SUCCESS)

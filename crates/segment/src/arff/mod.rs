@@ -24,7 +24,7 @@ use crate::tree::{Activity, ActivityTree};
 
 mod reader;
 use crate::tree::{Attribute, Feature};
-pub use reader::{is_arff_text, read_arff, ArffReader, WEKA_DUMMY_STRING};
+pub use reader::{is_arff_file, is_arff_text, read_arff, ArffReader, WEKA_DUMMY_STRING};
 
 /// The type of an ARFF attribute.
 #[derive(Debug, Clone, PartialEq, Eq)]

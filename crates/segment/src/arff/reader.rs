@@ -218,6 +218,31 @@ pub fn is_arff_text(text: &str) -> bool {
     false
 }
 
+/// Whether the file at `path` is an ARFF table: by its extension `.arff`, or by its
+/// content ([`is_arff_text`] on its first 64 KiB), since recognisers' tables often ship
+/// as `.txt`. The one place that decides it, for every command. A file that cannot be
+/// read is not ARFF here; reading it later says why.
+pub fn is_arff_file(path: &std::path::Path) -> bool {
+    use std::io::Read as _;
+    if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("arff"))
+    {
+        return true;
+    }
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut start = Vec::with_capacity(4096);
+    if std::io::Read::take(file, 64 * 1024)
+        .read_to_end(&mut start)
+        .is_err()
+    {
+        return false;
+    }
+    is_arff_text(&String::from_utf8_lossy(&start))
+}
+
 /// Where the reader is in the header (after `@data`, [`ArffReader`] reads rows).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Section {
@@ -233,13 +258,7 @@ enum Section {
 ///
 /// The whole table in memory: for files of any length, read with [`ArffReader`].
 pub fn read_arff(text: &str) -> Result<ArffTable, ArffError> {
-    let mut reader = ArffReader::new(text.as_bytes())?;
-    let rows = reader.by_ref().collect::<Result<Vec<_>, _>>()?;
-    Ok(ArffTable {
-        relation: reader.relation,
-        attributes: reader.attributes,
-        rows,
-    })
+    ArffReader::new(text.as_bytes())?.into_table()
 }
 
 /// An ARFF file read a row at a time, in memory bounded by its longest line: the header
@@ -443,6 +462,19 @@ impl<R: std::io::BufRead> ArffReader<R> {
             }
             .map(Some);
         }
+    }
+}
+
+impl<R: std::io::BufRead> ArffReader<R> {
+    /// The rest of the table read into memory, for what needs every row at once (C4.5 on
+    /// a data set that is not a hand-state table).
+    pub fn into_table(mut self) -> Result<ArffTable, ArffError> {
+        let rows = self.by_ref().collect::<Result<Vec<_>, _>>()?;
+        Ok(ArffTable {
+            relation: self.relation,
+            attributes: self.attributes,
+            rows,
+        })
     }
 }
 

@@ -88,9 +88,11 @@ pub fn reset_peak() {
     PEAK.store(heap_in_use(), Ordering::Relaxed);
 }
 
-/// The probe that lets the experiment measure each run's peak heap.
+/// The probe that lets `solve` and the experiment limit each run's heap and measure
+/// its peak.
 pub fn probe() -> slim::MemoryProbe {
     slim::MemoryProbe {
+        in_use: heap_in_use,
         reset: reset_peak,
         peak: peak_heap,
     }
@@ -99,6 +101,16 @@ pub fn probe() -> slim::MemoryProbe {
 /// Bytes currently allocated on the heap.
 pub fn heap_in_use() -> u64 {
     IN_USE.load(Ordering::Relaxed)
+}
+
+/// The memory the system could give to new work without swapping, in bytes
+/// (`MemAvailable` of `/proc/meminfo`), where the system reports it: what `auto` memory
+/// limits share out.
+pub fn available_bytes() -> Option<u64> {
+    let meminfo = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = meminfo.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    kib.checked_mul(1024)
 }
 
 /// The process's peak resident set size in KiB (`VmHWM`), where the system reports it.

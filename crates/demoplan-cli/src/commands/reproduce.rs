@@ -5,6 +5,7 @@
 use slim::FastDownward;
 
 use crate::cli::ReproduceArgs;
+use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::progress::Bar;
@@ -43,8 +44,13 @@ pub fn fast_downward(
 }
 
 /// With `jobs` above 1, how the grid's cells run in child processes: this program
-/// again, with this command line and `--cell ID`.
-pub fn cell_command(jobs: usize) -> Result<Option<experiment::CellCommand>, Failure> {
+/// again, with this command line and `--cell ID`, and the memory limit per run as this
+/// process resolved it (an `auto` limit read again in each child would see the memory
+/// its siblings already hold); the last `--memory-limit` given wins.
+pub fn cell_command(
+    jobs: usize,
+    memory_limit: Option<u64>,
+) -> Result<Option<experiment::CellCommand>, Failure> {
     if jobs <= 1 {
         return Ok(None);
     }
@@ -56,7 +62,13 @@ pub fn cell_command(jobs: usize) -> Result<Option<experiment::CellCommand>, Fail
     })?;
     Ok(Some(experiment::CellCommand {
         program,
-        args: std::env::args_os().skip(1).collect(),
+        args: std::env::args_os()
+            .skip(1)
+            .chain([
+                "--memory-limit".into(),
+                memory_limit.map_or("infinity".to_string(), |b| b.to_string()).into(),
+            ])
+            .collect(),
         jobs,
     }))
 }
@@ -72,6 +84,7 @@ pub fn print_cell(
 
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
+    let memory_limit = parse_run_memory_limit(&args.memory_limit, args.jobs as usize)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
         time_limit: time_limit(&args.time_limit)?,
@@ -82,7 +95,8 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         seed: args.seed,
         hands: args.hands as usize,
         memory: Some(crate::memory::probe()),
-        children: cell_command(args.jobs as usize)?,
+        memory_limit,
+        children: cell_command(args.jobs as usize, memory_limit)?,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::reproduce_cell(&options, id));

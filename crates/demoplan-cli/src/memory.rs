@@ -103,16 +103,6 @@ pub fn heap_in_use() -> u64 {
     IN_USE.load(Ordering::Relaxed)
 }
 
-/// The memory the system could give to new work without swapping, in bytes
-/// (`MemAvailable` of `/proc/meminfo`), where the system reports it: what `auto` memory
-/// limits share out.
-pub fn available_bytes() -> Option<u64> {
-    let meminfo = std::fs::read_to_string("/proc/meminfo").ok()?;
-    let line = meminfo.lines().find(|l| l.starts_with("MemAvailable:"))?;
-    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    kib.checked_mul(1024)
-}
-
 /// The process's peak resident set size in KiB (`VmHWM`), where the system reports it.
 pub fn peak_rss_kb() -> Option<u64> {
     let status = std::fs::read_to_string("/proc/self/status").ok()?;

@@ -10,7 +10,7 @@
 mod fast_downward;
 mod run;
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 pub use fast_downward::{parse_log, FastDownward, FdLog};
 pub use run::{

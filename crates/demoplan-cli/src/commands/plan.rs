@@ -55,15 +55,11 @@ pub fn parse_memory_limit(text: &str) -> Result<Option<u64>, String> {
     }
 }
 
-/// A memory limit per run (`--memory-limit` of `solve`, `reproduce` and `study`):
-/// what [`parse_memory_limit`] reads, or `auto`, the memory available when the command
-/// starts ([`memory::available_bytes`]) shared by the `runs_at_once`, so that runs side
-/// by side stop themselves before the kernel would kill one; no limit where the system
-/// does not say what is available.
+/// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or
+/// `auto` ([`experiment::auto_memory_limit`]).
 pub fn parse_run_memory_limit(text: &str, runs_at_once: usize) -> Result<Option<u64>, Failure> {
     if text.trim().eq_ignore_ascii_case("auto") {
-        let runs = u64::try_from(runs_at_once.max(1)).unwrap_or(u64::MAX);
-        return Ok(memory::available_bytes().map(|bytes| bytes / runs));
+        return Ok(experiment::auto_memory_limit(runs_at_once));
     }
     parse_memory_limit(text)
         .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--memory-limit: {e}")))

@@ -44,9 +44,8 @@ pub fn fast_downward(
 }
 
 /// With `jobs` above 1, how the grid's cells run in child processes: this program
-/// again, with this command line and `--cell ID`, and the memory limit per run as this
-/// process resolved it (an `auto` limit read again in each child would see the memory
-/// its siblings already hold); the last `--memory-limit` given wins.
+/// again, with this command line, `--cell ID` and the memory limit this process resolved
+/// (the last `--memory-limit` wins: `auto` again in a child would count its siblings).
 pub fn cell_command(
     jobs: usize,
     memory_limit: Option<u64>,
@@ -54,6 +53,7 @@ pub fn cell_command(
     if jobs <= 1 {
         return Ok(None);
     }
+    let bytes = memory_limit.map_or("infinity".to_string(), |b| b.to_string());
     let program = std::env::current_exe().map_err(|e| {
         Failure::plain(
             ExitCode::USAGE,
@@ -64,10 +64,7 @@ pub fn cell_command(
         program,
         args: std::env::args_os()
             .skip(1)
-            .chain([
-                "--memory-limit".into(),
-                memory_limit.map_or("infinity".to_string(), |b| b.to_string()).into(),
-            ])
+            .chain(["--memory-limit".into(), bytes.into()])
             .collect(),
         jobs,
     }))

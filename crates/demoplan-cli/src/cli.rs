@@ -544,7 +544,12 @@ pub struct ReproduceArgs {
     /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
     /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
     /// the outcome `memory`.
-    #[arg(long, value_name = "MEMORY", default_value = "auto", overrides_with = "memory_limit")]
+    #[arg(
+        long,
+        value_name = "MEMORY",
+        default_value = "auto",
+        overrides_with = "memory_limit"
+    )]
     pub memory_limit: String,
     /// Runs per cell; tables show medians.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
@@ -623,7 +628,12 @@ pub struct StudyArgs {
     /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
     /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
     /// the outcome `memory`.
-    #[arg(long, value_name = "MEMORY", default_value = "auto", overrides_with = "memory_limit")]
+    #[arg(
+        long,
+        value_name = "MEMORY",
+        default_value = "auto",
+        overrides_with = "memory_limit"
+    )]
     pub memory_limit: String,
     /// Run every cell with Fast Downward too.
     #[arg(long)]

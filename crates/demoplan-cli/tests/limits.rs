@@ -461,7 +461,8 @@ fn solve_stops_every_level_at_its_memory_limit() {
     // the process (the library and the levels' own heap) stays within the limit.
     let dir = learned_full_domain();
     check(Case {
-        name: "solve, blind on a tower of 12, 64 MiB per level",
+        // Six levels of about 2 s each (debug build) before each fills its 16 MiB.
+        name: "solve, blind on a tower of 12, 16 MiB per level",
         dir,
         args: vec![
             "solve",
@@ -471,7 +472,7 @@ fn solve_stops_every_level_at_its_memory_limit() {
             "astar(blind())",
         ],
         time_limit: Duration::from_secs(60),
-        memory_limit: Some(64 << 20),
+        memory_limit: Some(16 << 20),
         expected_code: 12,
         expected_line: "No plan: some level reached its memory limit (exit 12).",
     });

@@ -437,9 +437,7 @@ mod tests {
         // No probe: the planner counts its own structures, which exceed one byte at its
         // first check.
         let mut lab = lab_with_limit(Some(1));
-        let full = lab
-            .run(&cell(LevelChoice::Full, 1), &Known::new())
-            .unwrap();
+        let full = lab.run(&cell(LevelChoice::Full, 1), &Known::new()).unwrap();
         assert_eq!(full.outcome, "memory", "{full:?}");
         assert!(full.hit_limit() && !full.solved());
         assert!(full.plan.is_empty() && full.cost.is_none() && full.error.is_none());

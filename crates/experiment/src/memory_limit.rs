@@ -30,7 +30,10 @@ mod tests {
         assert_eq!(mem_available(meminfo), Some(4_000_000 * 1024));
         assert_eq!(mem_available("MemTotal: 8000000 kB\n"), None);
         assert_eq!(mem_available("MemAvailable: lots kB\n"), None);
-        assert_eq!(mem_available("MemAvailable: 99999999999999999999 kB\n"), None);
+        assert_eq!(
+            mem_available("MemAvailable: 99999999999999999999 kB\n"),
+            None
+        );
     }
 
     #[test]
@@ -39,6 +42,9 @@ mod tests {
             // Read twice, the available memory may have moved a little in between.
             assert!(four < one, "{four} {one}");
         }
-        assert_eq!(auto_memory_limit(0).is_some(), auto_memory_limit(1).is_some());
+        assert_eq!(
+            auto_memory_limit(0).is_some(),
+            auto_memory_limit(1).is_some()
+        );
     }
 }

@@ -73,8 +73,12 @@ fn main() {
             let start = Instant::now();
             let outcome = match translate_checked(&domain, &problem) {
                 Translated::Task(task, _) => {
-                    plan_task(&task, &config, &RunLimits::time(Duration::from_secs(10)).starting_at(start))
-                        .outcome
+                    plan_task(
+                        &task,
+                        &config,
+                        &RunLimits::time(Duration::from_secs(10)).starting_at(start),
+                    )
+                    .outcome
                 }
                 Translated::Done(run) => run.outcome,
             };

@@ -68,7 +68,7 @@ fn every_seed_plans_every_paper_goal_and_every_plan_executes() {
                 DomainOptions::default(),
                 &p,
                 &backend,
-                Some(LEVEL_LIMIT),
+                slim::RunLimits::time(LEVEL_LIMIT),
                 |_| {},
             );
             let level = solved.plan_level().unwrap_or_else(|| {

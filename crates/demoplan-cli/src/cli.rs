@@ -116,10 +116,11 @@ pub enum Command {
     /// until a plan is found.
     ///
     /// A level whose goal is unreachable even when deletes are ignored is rejected before
-    /// search; other levels are searched until proven unsolvable or their time limit.
-    /// Prints per level operators, outcome, time, expansions and plan cost, and the
+    /// search; other levels are searched until proven unsolvable or their time or memory
+    /// limit. Prints per level operators, outcome, time, expansions and plan cost, and the
     /// cumulative time over all levels. Exit 0 with a plan, 11 when every level is
-    /// unsolvable, 12 when none gave a plan and some level reached its time limit.
+    /// unsolvable, 12 when none gave a plan and some level reached its time or memory
+    /// limit.
     Solve(SolveArgs),
     /// Reproduce the paper's experiment: simulate the 12 demonstrations, learn the
     /// library, build every priority domain, plan the five goals on each with
@@ -467,6 +468,11 @@ pub struct SolveArgs {
     /// Time limit per level, with Fast Downward's units (`60`, `60s`, `2m`).
     #[arg(long, value_name = "TIME")]
     pub time_limit: Option<String>,
+    /// Memory limit per level, on the heap the level's run allocates, in binary units
+    /// (`512M`, `2G`; bytes without a unit). `auto`: the memory available when solve
+    /// starts; `infinity`: none. A level that reaches it stops with the outcome `memory`.
+    #[arg(long, value_name = "MEMORY", default_value = "auto")]
+    pub memory_limit: String,
     /// Who plans: demoplan or fast-downward.
     #[arg(long, value_name = "PLANNER", default_value = "demoplan")]
     pub planner: String,
@@ -534,6 +540,17 @@ pub struct ReproduceArgs {
     /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
     #[arg(long, value_name = "TIME", default_value = "60")]
     pub time_limit: String,
+    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
+    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
+    /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
+    /// the outcome `memory`.
+    #[arg(
+        long,
+        value_name = "MEMORY",
+        default_value = "auto",
+        overrides_with = "memory_limit"
+    )]
+    pub memory_limit: String,
     /// Runs per cell; tables show medians.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
     pub repeat: u32,
@@ -607,6 +624,17 @@ pub struct StudyArgs {
     /// Time limit per run, with Fast Downward's units (`20`, `20s`, `1m`).
     #[arg(long, value_name = "TIME", default_value = "20")]
     pub time_limit: String,
+    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
+    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
+    /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
+    /// the outcome `memory`.
+    #[arg(
+        long,
+        value_name = "MEMORY",
+        default_value = "auto",
+        overrides_with = "memory_limit"
+    )]
+    pub memory_limit: String,
     /// Run every cell with Fast Downward too.
     #[arg(long)]
     pub with_fd: bool,

@@ -88,9 +88,11 @@ pub fn reset_peak() {
     PEAK.store(heap_in_use(), Ordering::Relaxed);
 }
 
-/// The probe that lets the experiment measure each run's peak heap.
+/// The probe that lets `solve` and the experiment limit each run's heap and measure
+/// its peak.
 pub fn probe() -> slim::MemoryProbe {
     slim::MemoryProbe {
+        in_use: heap_in_use,
         reset: reset_peak,
         peak: peak_heap,
     }

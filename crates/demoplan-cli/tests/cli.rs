@@ -2608,3 +2608,185 @@ fn recordings_over_the_entity_and_line_limits_exit_31_naming_where() {
         "{stderr}"
     );
 }
+
+/// The outcome column of every row of a `runs.csv`, by level.
+fn outcomes_by_level(runs_csv: &str) -> Vec<(String, String)> {
+    let mut lines = runs_csv.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    lines
+        .map(|l| {
+            let row: Vec<&str> = l.split(',').collect();
+            (
+                row[col("level")].to_string(),
+                row[col("outcome")].to_string(),
+            )
+        })
+        .collect()
+}
+
+/// Asserts a run stopped by itself: no abort (134, SIGABRT after a failed allocation), no
+/// kill (137, SIGKILL from the kernel's OOM killer), no panic.
+fn assert_stopped_by_itself(out: &Output) {
+    use std::os::unix::process::ExitStatusExt;
+    assert_eq!(out.status.signal(), None, "{}", transcript(out));
+    assert!(
+        !matches!(out.status.code(), Some(134 | 137 | 101)),
+        "{}",
+        transcript(out)
+    );
+    assert!(
+        !String::from_utf8_lossy(&out.stderr).contains("panicked"),
+        "{}",
+        transcript(out)
+    );
+}
+
+#[test]
+fn solve_records_a_level_out_of_memory_and_exits_12() {
+    // Issue 23: every level of Algorithm 1 gets the memory limit of its own; a level
+    // that reaches it has the outcome `memory`, and with no plan at any level `solve`
+    // exits 12, as for a time limit.
+    let library = learned_library("solve-memory");
+    let tmp = library.parent().unwrap().to_path_buf();
+    let problem = tmp.join("goal-5.pddl");
+    let p = demoplan()
+        .args(["problem", "--paper-goal", "5", "-o"])
+        .arg(&problem)
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let plan = tmp.join("plan");
+    let solve = demoplan()
+        .arg("solve")
+        .arg(&library)
+        .arg(&problem)
+        .args(["--search", "astar(blind())", "--time-limit", "60"])
+        .args(["--memory-limit", "64K", "--plan-file"])
+        .arg(&plan)
+        .output()
+        .unwrap();
+    assert_stopped_by_itself(&solve);
+    let log = String::from_utf8_lossy(&solve.stdout).into_owned();
+    assert_eq!(solve.status.code(), Some(12), "{}", transcript(&solve));
+    assert!(
+        log.contains("No plan: some level reached its memory limit (exit 12)."),
+        "{log}"
+    );
+    // Every level tried is in the table, each out of memory (none proved unsolvable,
+    // none errored).
+    let rows: Vec<&str> = log
+        .lines()
+        .skip(1)
+        .take_while(|l| !l.starts_with("Cumulative"))
+        .collect();
+    assert!(!rows.is_empty(), "{log}");
+    for row in &rows {
+        assert_eq!(row.split_whitespace().nth(2), Some("memory"), "{log}");
+    }
+    assert!(!plan.exists(), "no plan file without a plan");
+    // Without the limit the same library plans (goal 1: goal 5 takes LM-cut about 40 s
+    // in the debug build).
+    let goal_1 = tmp.join("goal-1.pddl");
+    let p = demoplan()
+        .args(["problem", "--paper-goal", "1", "-o"])
+        .arg(&goal_1)
+        .output()
+        .unwrap();
+    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    let unlimited = demoplan()
+        .arg("solve")
+        .arg(&library)
+        .arg(&goal_1)
+        .args([
+            "--time-limit",
+            "60",
+            "--memory-limit",
+            "infinity",
+            "--plan-file",
+        ])
+        .arg(&plan)
+        .output()
+        .unwrap();
+    assert_eq!(
+        unlimited.status.code(),
+        Some(0),
+        "{}",
+        transcript(&unlimited)
+    );
+    // A memory limit that is not one is a command line error.
+    let bad = demoplan()
+        .arg("solve")
+        .arg(&library)
+        .arg(&problem)
+        .args(["--memory-limit", "lots"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(36), "{}", transcript(&bad));
+    assert!(
+        String::from_utf8_lossy(&bad.stderr).contains("--memory-limit"),
+        "{}",
+        transcript(&bad)
+    );
+}
+
+#[test]
+fn study_and_reproduce_record_runs_out_of_memory() {
+    // Issue 23: a run of a study or a reproduction that reaches its memory limit is a
+    // record with the outcome `memory` (as one out of time is `limit`), in this process
+    // (-j 1, the limit on top of what the process already holds) and in child processes
+    // (-j 2, each with its own allocator and the limit the parent resolved).
+    let tmp = tempdir("memory-limit-runs");
+    let study_out = tmp.join("study");
+    let study = demoplan()
+        .arg("study")
+        .arg("-o")
+        .arg(&study_out)
+        .args(["--seeds", "1", "--hands", "1", "--heights", "6"])
+        .args(["--time-limit", "20", "--memory-limit", "64K", "-j", "1"])
+        .output()
+        .unwrap();
+    assert_stopped_by_itself(&study);
+    assert_eq!(study.status.code(), Some(0), "{}", transcript(&study));
+    let runs = std::fs::read_to_string(study_out.join("runs.csv")).unwrap();
+    let outcomes = outcomes_by_level(&runs);
+    // One seed, one height, two planners, three levels (prio-1, full, alg1).
+    assert_eq!(outcomes.len(), 6, "{runs}");
+    for (level, outcome) in &outcomes {
+        assert_eq!(outcome, "memory", "{level}: {runs}");
+    }
+    let results = std::fs::read_to_string(study_out.join("results.jsonl")).unwrap();
+    assert_eq!(
+        results.matches(r#""outcome":"memory""#).count(),
+        6,
+        "{results}"
+    );
+
+    let reproduce_out = tmp.join("reproduce");
+    let reproduce = demoplan()
+        .arg("reproduce")
+        .arg("-o")
+        .arg(&reproduce_out)
+        .args(["--prios", "1", "--goals", "5", "--time-limit", "20"])
+        .args(["--memory-limit", "64K", "-j", "2"])
+        .output()
+        .unwrap();
+    assert_stopped_by_itself(&reproduce);
+    assert_eq!(
+        reproduce.status.code(),
+        Some(0),
+        "{}",
+        transcript(&reproduce)
+    );
+    let results = std::fs::read_to_string(reproduce_out.join("results.jsonl")).unwrap();
+    let records: Vec<serde_json::Value> = results
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    // Two planners, priority 1 and Algorithm 1, goal 5.
+    assert_eq!(records.len(), 4, "{results}");
+    for r in &records {
+        assert_eq!(r["outcome"], "memory", "{r}");
+        assert!(r["error"].is_null(), "a child that failed: {r}");
+    }
+}

@@ -92,6 +92,32 @@ struct Case<'a> {
     expected_line: &'a str,
 }
 
+/// How a command takes its limits, and the statistics line it prints at the end.
+struct LimitOptions {
+    time: &'static str,
+    memory: &'static str,
+    statistics: &'static str,
+}
+
+impl LimitOptions {
+    fn of(command: &str) -> LimitOptions {
+        match command {
+            // Limits per level: a case's limits are then those of each level, and its
+            // time limit should leave room for every level it tries.
+            "solve" => LimitOptions {
+                time: "--time-limit",
+                memory: "--memory-limit",
+                statistics: "Cumulative time over ",
+            },
+            _ => LimitOptions {
+                time: "--overall-time-limit",
+                memory: "--overall-memory-limit",
+                statistics: "Peak memory: ",
+            },
+        }
+    }
+}
+
 /// Runs a case and checks the promise; prints one line per case.
 fn check(case: Case) -> Measured {
     // One case at a time: cases run side by side would take each other's CPU.
@@ -100,11 +126,12 @@ fn check(case: Case) -> Measured {
         .lock()
         .unwrap_or_else(|poisoned| poisoned.into_inner());
     let mut args = case.args.clone();
+    let options = LimitOptions::of(args[0]);
     let seconds = format!("{:.3}s", case.time_limit.as_secs_f64());
-    args.extend(["--overall-time-limit", &seconds]);
+    args.extend([options.time, &seconds]);
     let memory = case.memory_limit.map(|m| m.to_string());
     if let Some(m) = &memory {
-        args.extend(["--overall-memory-limit", m]);
+        args.extend([options.memory, m]);
     }
     let run = measure(case.dir, &args);
     println!(
@@ -137,7 +164,7 @@ fn check(case: Case) -> Measured {
         context()
     );
     assert!(
-        run.stdout.contains("Peak memory: "),
+        run.stdout.contains(options.statistics),
         "no statistics; {}",
         context()
     );
@@ -424,5 +451,29 @@ fn lmcut_and_blind_search_stop_at_the_limits_on_a_task_they_cannot_finish() {
         memory_limit: Some(100 << 20),
         expected_code: 22,
         expected_line: "Memory limit has been reached.",
+    });
+}
+
+#[test]
+fn solve_stops_every_level_at_its_memory_limit() {
+    // Issue 23: `solve` gives each level the memory limit of its own; blind search on a
+    // tower of twelve fills it on every level, which then has the outcome `memory`, and
+    // the process (the library and the levels' own heap) stays within the limit.
+    let dir = learned_full_domain();
+    check(Case {
+        // Six levels of about 2 s each (debug build) before each fills its 16 MiB.
+        name: "solve, blind on a tower of 12, 16 MiB per level",
+        dir,
+        args: vec![
+            "solve",
+            "library.json",
+            "tower-12.pddl",
+            "--search",
+            "astar(blind())",
+        ],
+        time_limit: Duration::from_secs(60),
+        memory_limit: Some(16 << 20),
+        expected_code: 12,
+        expected_line: "No plan: some level reached its memory limit (exit 12).",
     });
 }

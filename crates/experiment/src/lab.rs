@@ -7,35 +7,46 @@ use std::time::Duration;
 use grounding::GroundingConfig;
 use learn::{levels, problem, tower_goal, DomainOptions, Grouping, Library, Scene};
 use segment::ActivityTree;
-use slim::{Backend, FastDownward, MemoryProbe, Outcome, PlanRun};
+use slim::{Backend, FastDownward, MemoryProbe, Outcome, PlanRun, RunLimits};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
 use crate::record::{RunRecord, Times, WideningStep};
 use crate::ExperimentError;
 
 /// Where the cells of a grid are computed: the simulator's parameters every cell's
-/// `params` must name, Fast Downward if the grid runs it, and how to measure peak heap.
+/// `params` must name, Fast Downward if the grid runs it, how to measure peak heap, and
+/// the memory limit of each run.
+///
+/// The memory limit belongs to the lab, not to the cell (it is not in [`Cell::id`]):
+/// like the machine's speed, it is where the grid runs. A run that reaches it is
+/// recorded with the outcome `memory`, as one that reaches its time limit is with
+/// `limit`.
 #[derive(Debug)]
 pub struct Lab {
     params: simulate::SimParams,
     params_key: String,
     fast_downward: Option<FastDownward>,
     memory: Option<MemoryProbe>,
+    memory_limit: Option<u64>,
     libraries: HashMap<String, Library>,
 }
 
 impl Lab {
-    /// A lab for cells of these simulator parameters.
+    /// A lab for cells of these simulator parameters, each run limited to
+    /// `memory_limit` bytes of heap of its own (`None`: no limit), read through
+    /// `memory` (without a probe the planner counts its own main structures).
     pub fn new(
         params: simulate::SimParams,
         fast_downward: Option<FastDownward>,
         memory: Option<MemoryProbe>,
+        memory_limit: Option<u64>,
     ) -> Lab {
         Lab {
             params_key: params_key(&params),
             params,
             fast_downward,
             memory,
+            memory_limit,
             libraries: HashMap::new(),
         }
     }
@@ -84,10 +95,13 @@ impl Lab {
     pub fn run(&mut self, cell: &Cell, known: &Known) -> Result<RunRecord, ExperimentError> {
         let planners = Planners {
             fast_downward: self.fast_downward.clone(),
-            memory: self.memory,
+            limits: RunLimits {
+                time: Some(cell.time_limit),
+                memory_bytes: self.memory_limit,
+                memory: self.memory,
+            },
         };
         let backend = planners.backend(cell.planner, cell.time_limit)?;
-        let memory = self.memory;
         let conditions = cell.conditions.clone();
         let options = DomainOptions {
             keep_without_effects: conditions.keep_without_effects,
@@ -115,7 +129,7 @@ impl Lab {
             )));
         };
         let domain = learn::domain("demoplan", &level.operators);
-        let run = backend.plan_measured(&domain, &problem, Some(cell.time_limit), memory);
+        let run = backend.plan(&domain, &problem, &planners.limits);
         record.prio = level.prio;
         record.operators = level.operators.len();
         record.times = Times::of(&run);
@@ -124,11 +138,11 @@ impl Lab {
     }
 }
 
-/// Who plans a cell's runs: Fast Downward if the grid runs it, and how demoplan's runs
-/// measure their peak heap.
+/// Who plans a cell's runs: Fast Downward if the grid runs it, and the limits of each
+/// run (the cell's time limit, the lab's memory limit and probe).
 struct Planners {
     fast_downward: Option<FastDownward>,
-    memory: Option<MemoryProbe>,
+    limits: RunLimits,
 }
 
 impl Planners {
@@ -146,7 +160,6 @@ impl Planners {
         record: &mut RunRecord,
     ) -> Result<(), ExperimentError> {
         let budget = cell.time_limit.as_secs_f64();
-        let memory = self.memory;
         let mut times = Times::default();
         let mut peak: Option<u64> = None;
         let mut outcome = if all.is_empty() {
@@ -182,7 +195,8 @@ impl Planners {
                 None => {
                     let left = Duration::from_secs_f64(left);
                     let backend = self.backend(cell.planner, left)?;
-                    let run = backend.plan_measured(&domain, problem, Some(left), memory);
+                    let limits = self.limits.with_time(Some(left));
+                    let run = backend.plan(&domain, problem, &limits);
                     let mut step = record.clone();
                     step.times = Times::of(&run);
                     step.outcome = run.outcome.word().to_string();
@@ -217,7 +231,9 @@ impl Planners {
                     record.executed = step.executed;
                     "solved"
                 }
-                "limit" | "memory" => "limit",
+                // A level out of memory ends the widening as one out of time does.
+                "limit" => "limit",
+                "memory" => "memory",
                 "error" => "error",
                 _ => continue,
             };
@@ -356,7 +372,7 @@ mod tests {
     }
 
     fn lab() -> Lab {
-        Lab::new(simulate::SimParams::default(), None, None)
+        Lab::new(simulate::SimParams::default(), None, None, None)
     }
 
     #[test]
@@ -414,6 +430,36 @@ mod tests {
             (1.0, 4.0, 15.0)
         );
         assert!(cut.plan.is_empty() && cut.cost.is_none());
+    }
+
+    #[test]
+    fn a_run_out_of_memory_is_recorded_as_memory_and_ends_the_widening() {
+        // No probe: the planner counts its own structures, which exceed one byte at its
+        // first check.
+        let mut lab = lab_with_limit(Some(1));
+        let full = lab.run(&cell(LevelChoice::Full, 1), &Known::new()).unwrap();
+        assert_eq!(full.outcome, "memory", "{full:?}");
+        assert!(full.hit_limit() && !full.solved());
+        assert!(full.plan.is_empty() && full.cost.is_none() && full.error.is_none());
+        let line = full.to_json_line();
+        assert!(line.contains(r#""outcome":"memory""#), "{line}");
+        // Algorithm 1 stops at the first level that runs out, with that outcome.
+        let alg1 = lab
+            .run(&cell(LevelChoice::Algorithm1, 1), &Known::new())
+            .unwrap();
+        assert_eq!(alg1.outcome, "memory", "{alg1:?}");
+        assert_eq!(alg1.widening.len(), 1);
+        assert_eq!(alg1.widening[0].outcome, "memory");
+        // The same lab without the limit plans the same cell.
+        let mut unlimited = lab_with_limit(None);
+        let solved = unlimited
+            .run(&cell(LevelChoice::Full, 1), &Known::new())
+            .unwrap();
+        assert!(solved.solved(), "{solved:?}");
+    }
+
+    fn lab_with_limit(bytes: Option<u64>) -> Lab {
+        Lab::new(simulate::SimParams::default(), None, None, bytes)
     }
 
     #[test]

@@ -33,6 +33,7 @@ mod cell;
 mod children;
 mod findings;
 mod lab;
+mod memory_limit;
 mod output;
 mod ratio;
 mod record;
@@ -49,6 +50,7 @@ pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAM
 pub use children::CellCommand;
 pub use findings::findings;
 pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
+pub use memory_limit::auto_memory_limit;
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
 pub use reproduce::{reproduce, reproduce_cell, ReproduceOptions, Reproduction};

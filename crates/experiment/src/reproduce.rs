@@ -40,6 +40,9 @@ pub struct ReproduceOptions {
     pub hands: usize,
     /// How to measure demoplan's peak heap per run.
     pub memory: Option<MemoryProbe>,
+    /// Heap bytes per run, on top of what the process holds when the run starts
+    /// (`None`: no limit); a run that reaches it is recorded as `memory`.
+    pub memory_limit: Option<u64>,
     /// Run the cells in child processes, several at a time; `None` runs them here,
     /// one after another.
     pub children: Option<CellCommand>,
@@ -101,6 +104,7 @@ fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), 
         simulate::SimParams::default(),
         options.fast_downward.clone(),
         options.memory,
+        options.memory_limit,
     );
     let base = Conditions::paper_goal(options.seed, 1, options.hands);
     let library = lab.library(&base)?.clone();
@@ -371,7 +375,7 @@ fn report_outcome(r: &RunRecord) -> report::Outcome {
     match r.outcome.as_str() {
         "solved" => report::Outcome::Solved,
         "relaxed-unreachable" | "unsolvable" => report::Outcome::Unsolvable,
-        "limit" => report::Outcome::Limit,
+        "limit" | "memory" => report::Outcome::Limit,
         _ => report::Outcome::Error,
     }
 }

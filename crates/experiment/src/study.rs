@@ -44,6 +44,9 @@ pub struct StudyOptions {
     pub time_limit: Duration,
     pub fast_downward: Option<FastDownward>,
     pub memory: Option<MemoryProbe>,
+    /// Heap bytes per run, on top of what the process holds when the run starts
+    /// (`None`: no limit); a run that reaches it is recorded as `memory`.
+    pub memory_limit: Option<u64>,
     /// Run the cells in child processes, several at a time; `None` runs them here,
     /// one after another.
     pub children: Option<CellCommand>,
@@ -196,6 +199,7 @@ pub fn study(
         options.params.clone(),
         options.fast_downward.clone(),
         options.memory,
+        options.memory_limit,
     );
     let describe = |c: &Cell| {
         format!(
@@ -257,6 +261,7 @@ pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, Experim
         options.params.clone(),
         options.fast_downward.clone(),
         options.memory,
+        options.memory_limit,
     );
     run_cell(&mut lab, &cells, id, &options.out.join("results.jsonl"))
 }

@@ -82,7 +82,8 @@ pub enum Outcome {
     Solved,
     /// Proven unsolvable on this domain.
     Unsolvable,
-    /// Hit the time limit.
+    /// Hit the time limit, or the memory limit (a bound too: with more memory it would
+    /// have taken longer).
     Limit,
     Error,
 }

@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 use grounding::GroundingConfig;
 use learn::{levels, DomainOptions, Grouping, Library, Scene};
 use segment::ActivityTree;
-use slim::{plan_task, translate_checked, Outcome, Translated};
+use slim::{plan_task, translate_checked, Outcome, RunLimits, Translated};
 
 fn library(seed: u64, grouping: Grouping) -> Option<Library> {
     let study = simulate::study(&simulate::SimParams::default(), seed, 3, 4).ok()?;
@@ -73,7 +73,12 @@ fn main() {
             let start = Instant::now();
             let outcome = match translate_checked(&domain, &problem) {
                 Translated::Task(task, _) => {
-                    plan_task(&task, &config, Some(start + Duration::from_secs(10))).outcome
+                    plan_task(
+                        &task,
+                        &config,
+                        &RunLimits::time(Duration::from_secs(10)).starting_at(start),
+                    )
+                    .outcome
                 }
                 Translated::Done(run) => run.outcome,
             };

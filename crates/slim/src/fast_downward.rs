@@ -55,13 +55,16 @@ impl FastDownward {
         Ok(FastDownward { driver, python })
     }
 
-    /// Plans with `search` under `time_limit` (Fast Downward's `--overall-time-limit`).
+    /// Plans with `search` under `time_limit` and `memory_limit` bytes (Fast Downward's
+    /// `--overall-time-limit` and `--overall-memory-limit`, which its driver sets as the
+    /// process's limits).
     pub fn plan(
         &self,
         domain: &str,
         problem: &str,
         search: &str,
         time_limit: Option<Duration>,
+        memory_limit: Option<u64>,
     ) -> PlanRun {
         let start = Instant::now();
         let mut run = PlanRun::ended(Outcome::Error(String::new()));
@@ -70,7 +73,7 @@ impl FastDownward {
             std::process::id(),
             RUNS.fetch_add(1, Ordering::Relaxed)
         ));
-        let result = self.run_in(&dir, domain, problem, search, time_limit);
+        let result = self.run_in(&dir, domain, problem, search, time_limit, memory_limit);
         let _ = std::fs::remove_dir_all(&dir);
         match result {
             Ok((code, log, plan)) => {
@@ -119,6 +122,7 @@ impl FastDownward {
         problem: &str,
         search: &str,
         time_limit: Option<Duration>,
+        memory_limit: Option<u64>,
     ) -> Result<(Option<i32>, String, String), String> {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
@@ -139,6 +143,11 @@ impl FastDownward {
         if let Some(limit) = time_limit {
             command.arg("--overall-time-limit");
             command.arg(format!("{}s", limit.as_secs().max(1)));
+        }
+        if let Some(bytes) = memory_limit {
+            // In KiB, with its unit, so that no default unit of the driver applies.
+            command.arg("--overall-memory-limit");
+            command.arg(format!("{}K", bytes.div_ceil(1024).max(1)));
         }
         command
             .args(["domain.pddl", "problem.pddl", "--search", search])

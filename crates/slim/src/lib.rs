@@ -16,8 +16,8 @@ use std::time::{Duration, Instant};
 pub use fast_downward::{parse_log, FastDownward, FdLog};
 pub use logged::{plan_logged, LoggedRun, PlanInput, RunError, StatisticsRecord};
 pub use run::{
-    plan_task, translate_checked, translate_checked_until, MemoryProbe, Outcome, PlanRun,
-    Translated,
+    plan_task, translate_checked, translate_checked_within, MemoryProbe, Outcome, PlanRun,
+    RunLimits, Translated,
 };
 
 use learn::{domain, levels, DomainOptions, Library};
@@ -59,53 +59,46 @@ pub enum Backend {
 }
 
 impl Backend {
-    /// Plans a domain and problem with a time limit.
+    /// Plans a domain and problem within `limits`, counted from now: one deadline and
+    /// one memory limit for the whole run, translation included. With a
+    /// [`MemoryProbe`], demoplan's run also measures its peak heap (Fast Downward
+    /// reports its own peak, and gets the limits as its `--overall-time-limit` and
+    /// `--overall-memory-limit`).
     pub fn plan(
         &self,
         domain: &pddl::Domain,
         problem: &pddl::Problem,
-        time_limit: Option<Duration>,
-    ) -> PlanRun {
-        self.plan_measured(domain, problem, time_limit, None)
-    }
-
-    /// Like [`plan`](Self::plan), and for demoplan's planner the run's peak heap
-    /// through `memory` (Fast Downward reports its own peak).
-    pub fn plan_measured(
-        &self,
-        domain: &pddl::Domain,
-        problem: &pddl::Problem,
-        time_limit: Option<Duration>,
-        memory: Option<MemoryProbe>,
+        limits: &RunLimits,
     ) -> PlanRun {
         let start = Instant::now();
-        // One deadline for the whole run, translation included; a limit too far away to
-        // be an instant is no limit.
-        let deadline = task::deadline_after(start, time_limit);
-        if let (Backend::Demoplan(_), Some(probe)) = (self, memory) {
-            (probe.reset)();
-        }
-        let mut run = match self {
-            Backend::Demoplan(config) => match translate_checked_until(domain, problem, deadline) {
-                Translated::Task(task, translate_time) => {
-                    let mut run = plan_task(&task, config, deadline);
-                    run.translate_time = translate_time;
-                    run.total_time = start.elapsed();
-                    run
+        match self {
+            Backend::Demoplan(config) => {
+                if let Some(probe) = limits.memory {
+                    (probe.reset)();
                 }
-                Translated::Done(run) => run,
-            },
+                let within = limits.starting_at(start);
+                let mut run = match translate_checked_within(domain, problem, &within) {
+                    Translated::Task(task, translate_time) => {
+                        let mut run = plan_task(&task, config, &within);
+                        run.translate_time = translate_time;
+                        run.total_time = start.elapsed();
+                        run
+                    }
+                    Translated::Done(run) => run,
+                };
+                if let Some(probe) = limits.memory {
+                    run.peak_memory_kb = Some((probe.peak)().div_ceil(1024));
+                }
+                run
+            }
             Backend::FastDownward(fd, search) => fd.plan(
                 &domain.to_string(),
                 &problem.to_string(),
                 search,
-                time_limit,
+                limits.time,
+                limits.memory_bytes,
             ),
-        };
-        if let (Backend::Demoplan(_), Some(probe)) = (self, memory) {
-            run.peak_memory_kb = Some((probe.peak)().div_ceil(1024));
         }
-        run
     }
 }
 
@@ -149,40 +142,31 @@ impl Solved {
 }
 
 /// Algorithm 1: for priority 1, 2, ... over the distinct operator subsets, build the
-/// domain and plan; stop at the first plan. Every level gets `time_limit`. A level whose
-/// goal the relaxation cannot reach is rejected before search (also with Fast Downward:
-/// demoplan's translator decides it in milliseconds). `progress` sees each level as it
-/// ends.
+/// domain and plan; stop at the first plan. Every level gets `limits` of its own (time,
+/// translation included, and memory: a level that reaches either has that outcome and
+/// the loop widens on). A level whose goal the relaxation cannot reach is rejected
+/// before search (also with Fast Downward: demoplan's translator decides it in
+/// milliseconds). `progress` sees each level as it ends.
 pub fn solve(
     library: &Library,
     options: DomainOptions,
     problem: &pddl::Problem,
     backend: &Backend,
-    time_limit: Option<Duration>,
+    limits: RunLimits,
     mut progress: impl FnMut(&LevelResult),
 ) -> Solved {
     let start = Instant::now();
     let mut results = Vec::new();
     for level in levels(library, options) {
         let domain = domain("demoplan", &level.operators);
-        // Each level's run has the time limit, translation included.
-        let level_start = Instant::now();
-        let deadline = match backend {
-            Backend::Demoplan(_) => task::deadline_after(level_start, time_limit),
-            Backend::FastDownward(..) => None,
-        };
-        let run = match (backend, translate_checked_until(&domain, problem, deadline)) {
-            // Rejected (or broken) before search, whoever plans.
-            (_, Translated::Done(run)) => run,
-            (Backend::Demoplan(config), Translated::Task(task, translate_time)) => {
-                let mut run = plan_task(&task, config, deadline);
-                run.translate_time = translate_time;
-                run.total_time = level_start.elapsed();
-                run
-            }
-            (Backend::FastDownward(..), Translated::Task(..)) => {
-                backend.plan(&domain, problem, time_limit)
-            }
+        let run = match backend {
+            Backend::Demoplan(_) => backend.plan(&domain, problem, &limits),
+            // Rejected (or broken) before search by demoplan's translator, with no
+            // limits (it takes milliseconds), then planned by Fast Downward.
+            Backend::FastDownward(..) => match translate_checked(&domain, problem) {
+                Translated::Done(run) => run,
+                Translated::Task(..) => backend.plan(&domain, problem, &limits),
+            },
         };
         let result = LevelResult {
             prio: level.prio,

@@ -76,15 +76,63 @@ pub struct PlanRun {
     pub peak_memory_kb: Option<u64>,
 }
 
-/// How a caller that counts allocations lets runs measure their peak heap: `reset`
-/// starts a new peak at what is in use now, `peak` reads it in bytes. Library crates
-/// cannot install a global allocator; the executable that does hands these in.
+/// How a caller that counts allocations lets runs measure and limit their heap:
+/// `in_use` reads the bytes allocated now, `reset` starts a new peak at what is in use
+/// now, `peak` reads it in bytes. Library crates cannot install a global allocator; the
+/// executable that does hands these in.
 #[derive(Debug, Clone, Copy)]
 pub struct MemoryProbe {
+    /// The heap in use now, in bytes (what [`task::Limits::memory_usage`] reads).
+    pub in_use: fn() -> u64,
     /// Starts a new peak.
     pub reset: fn(),
     /// The peak since the last reset, in bytes.
     pub peak: fn() -> u64,
+}
+
+/// The limits every planning run gets, each counted from that run's own start: a time
+/// limit (translation, heuristic construction and search together) and a memory limit
+/// on the heap the run itself allocates. What the process held before the run (the
+/// library, the simulated study, earlier results of a grid computed in one process) is
+/// not the run's: the limit is charged on top of the heap in use at its start. The
+/// default has no limits and measures nothing.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RunLimits {
+    /// Wall time per run; `None` is no limit.
+    pub time: Option<Duration>,
+    /// Heap bytes per run; `None` is no limit. Without a [`MemoryProbe`] each phase
+    /// counts the bytes of its own main structures instead (see [`task::Limits`]).
+    pub memory_bytes: Option<u64>,
+    /// How the heap is read, for the memory limit and the run's peak.
+    pub memory: Option<MemoryProbe>,
+}
+
+impl RunLimits {
+    /// A time limit alone, nothing measured.
+    pub fn time(limit: Duration) -> RunLimits {
+        RunLimits {
+            time: Some(limit),
+            ..RunLimits::default()
+        }
+    }
+
+    /// The same limits with another time limit.
+    pub fn with_time(self, time: Option<Duration>) -> RunLimits {
+        RunLimits { time, ..self }
+    }
+
+    /// The limits of a run that starts at `start`, as every phase checks them: the
+    /// deadline `time` after `start` (none if it cannot be represented), and the memory
+    /// limit on top of the heap in use now. Never overflows.
+    pub fn starting_at(&self, start: Instant) -> task::Limits {
+        let in_use = self.memory.map(|probe| probe.in_use);
+        let baseline = in_use.map_or(0, |read| read());
+        task::Limits {
+            deadline: task::deadline_after(start, self.time),
+            memory_limit_bytes: self.memory_bytes.map(|m| baseline.saturating_add(m)),
+            memory_usage: in_use,
+        }
+    }
 }
 
 impl PlanRun {
@@ -126,15 +174,15 @@ pub enum Translated {
 
 /// Checks and translates a domain and problem.
 pub fn translate_checked(domain: &pddl::Domain, problem: &pddl::Problem) -> Translated {
-    translate_checked_until(domain, problem, None)
+    translate_checked_within(domain, problem, &task::Limits::default())
 }
 
-/// Like [`translate_checked`], stopping at the run's `deadline` (then the run is done
-/// with [`Outcome::TimeLimit`]).
-pub fn translate_checked_until(
+/// Like [`translate_checked`], stopping at the run's `limits` (then the run is done
+/// with [`Outcome::TimeLimit`] or [`Outcome::MemoryLimit`]).
+pub fn translate_checked_within(
     domain: &pddl::Domain,
     problem: &pddl::Problem,
-    deadline: Option<Instant>,
+    limits: &task::Limits,
 ) -> Translated {
     let start = Instant::now();
     let done = |outcome: Outcome| {
@@ -148,11 +196,7 @@ pub fn translate_checked_until(
             "problem does not fit the domain: {e}"
         )));
     }
-    let limits = task::Limits {
-        deadline,
-        ..task::Limits::default()
-    };
-    match translate::translate_within(domain, problem, &limits) {
+    match translate::translate_within(domain, problem, limits) {
         Ok(translate::Translation::Task(t)) => Translated::Task(Box::new(t.task), start.elapsed()),
         Ok(translate::Translation::Unsolvable { .. }) => done(Outcome::RelaxedUnreachable),
         Ok(translate::Translation::Stopped { limit, .. }) => done(Outcome::limit(limit)),
@@ -160,23 +204,20 @@ pub fn translate_checked_until(
     }
 }
 
-/// Searches a translated task until `deadline`: builds the heuristic (timed as
+/// Searches a translated task within the run's `limits`: builds the heuristic (timed as
 /// [`PlanRun::heuristic_time`]), then runs the search (timed as
-/// [`PlanRun::search_time`]); `total_time` is both. [`plan_logged`] without its log;
-/// a search that cannot run is [`Outcome::Error`].
+/// [`PlanRun::search_time`]); `total_time` is both. A limit reached in either is the
+/// run's outcome ([`Outcome::TimeLimit`], [`Outcome::MemoryLimit`]); a search that
+/// cannot run is [`Outcome::Error`]. [`plan_logged`] without its log.
 ///
 /// [`plan_logged`]: crate::plan_logged
 pub fn plan_task(
     task: &task::Task,
     config: &search::SearchConfig,
-    deadline: Option<Instant>,
+    limits: &task::Limits,
 ) -> PlanRun {
-    let limits = search::SearchLimits {
-        deadline,
-        ..search::SearchLimits::default()
-    };
     let input = crate::PlanInput::Task(task);
-    match crate::plan_logged(input, config, &limits, Instant::now(), &mut |_| {}) {
+    match crate::plan_logged(input, config, limits, Instant::now(), &mut |_| {}) {
         Ok(logged) => logged.run,
         Err(e) => PlanRun::ended(Outcome::Error(e.to_string())),
     }

@@ -33,7 +33,7 @@ fn check(costs: Option<[u64; 2]>, expect_text: &str) {
     ))
     .unwrap();
     let backend = Backend::Demoplan(search::parse_search("astar(blind())").unwrap());
-    let run = backend.plan(&domain, &problem, None);
+    let run = backend.plan(&domain, &problem, &slim::RunLimits::default());
     assert_eq!(run.outcome, Outcome::Solved);
     assert_eq!(run.plan_text().as_deref(), Some(expect_text));
     // The plan file reads back as the run's steps.

@@ -6,7 +6,7 @@
 use std::time::Duration;
 
 use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene};
-use slim::{solve, Backend, Outcome};
+use slim::{solve, Backend, Outcome, RunLimits};
 
 fn fixture() -> Library {
     let text = std::fs::read_to_string(concat!(
@@ -30,7 +30,7 @@ fn widening_finds_the_plan_on_the_second_level() {
         DomainOptions::default(),
         &p,
         &backend,
-        Some(Duration::from_secs(60)),
+        RunLimits::time(Duration::from_secs(60)),
         |l| seen.push((l.prio, l.run.outcome.clone())),
     );
     assert_eq!(
@@ -74,7 +74,7 @@ fn exhausting_every_level_reports_each() {
         DomainOptions::default(),
         &p,
         &backend,
-        Some(Duration::from_secs(60)),
+        RunLimits::time(Duration::from_secs(60)),
         |_| {},
     );
     assert!(solved.plan_level().is_none());

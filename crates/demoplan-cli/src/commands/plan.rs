@@ -55,6 +55,16 @@ pub fn parse_memory_limit(text: &str) -> Result<Option<u64>, String> {
     }
 }
 
+/// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or
+/// `auto` ([`experiment::auto_memory_limit`]).
+pub fn parse_run_memory_limit(text: &str, runs_at_once: usize) -> Result<Option<u64>, Failure> {
+    if text.trim().eq_ignore_ascii_case("auto") {
+        return Ok(experiment::auto_memory_limit(runs_at_once));
+    }
+    parse_memory_limit(text)
+        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--memory-limit: {e}")))
+}
+
 fn is_sas_file(path: &Path) -> bool {
     path.extension().is_some_and(|e| e == "sas")
 }

@@ -5,6 +5,7 @@
 use slim::FastDownward;
 
 use crate::cli::ReproduceArgs;
+use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::progress::Bar;
@@ -43,11 +44,16 @@ pub fn fast_downward(
 }
 
 /// With `jobs` above 1, how the grid's cells run in child processes: this program
-/// again, with this command line and `--cell ID`.
-pub fn cell_command(jobs: usize) -> Result<Option<experiment::CellCommand>, Failure> {
+/// again, with this command line, `--cell ID` and the memory limit this process resolved
+/// (the last `--memory-limit` wins: `auto` again in a child would count its siblings).
+pub fn cell_command(
+    jobs: usize,
+    memory_limit: Option<u64>,
+) -> Result<Option<experiment::CellCommand>, Failure> {
     if jobs <= 1 {
         return Ok(None);
     }
+    let bytes = memory_limit.map_or("infinity".to_string(), |b| b.to_string());
     let program = std::env::current_exe().map_err(|e| {
         Failure::plain(
             ExitCode::USAGE,
@@ -56,7 +62,10 @@ pub fn cell_command(jobs: usize) -> Result<Option<experiment::CellCommand>, Fail
     })?;
     Ok(Some(experiment::CellCommand {
         program,
-        args: std::env::args_os().skip(1).collect(),
+        args: std::env::args_os()
+            .skip(1)
+            .chain(["--memory-limit".into(), bytes.into()])
+            .collect(),
         jobs,
     }))
 }
@@ -72,6 +81,7 @@ pub fn print_cell(
 
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
+    let memory_limit = parse_run_memory_limit(&args.memory_limit, args.jobs as usize)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
         time_limit: time_limit(&args.time_limit)?,
@@ -82,7 +92,8 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         seed: args.seed,
         hands: args.hands as usize,
         memory: Some(crate::memory::probe()),
-        children: cell_command(args.jobs as usize)?,
+        memory_limit,
+        children: cell_command(args.jobs as usize, memory_limit)?,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::reproduce_cell(&options, id));

@@ -28,6 +28,12 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
             .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))?,
         None => None,
     };
+    let memory_limit = crate::commands::plan::parse_run_memory_limit(&args.memory_limit, 1)?;
+    let limits = slim::RunLimits {
+        time: time_limit,
+        memory_bytes: memory_limit,
+        memory: Some(crate::memory::probe()),
+    };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
     let backend = match PlannerName::from_name(&args.planner) {
@@ -63,7 +69,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         "{:>5} {:>9}  {:<19} {:>9} {:>11} {:>6}",
         "prio", "operators", "outcome", "time (s)", "expansions", "cost"
     );
-    let solved = slim::solve(&library, options, &problem, &backend, time_limit, |level| {
+    let solved = slim::solve(&library, options, &problem, &backend, limits, |level| {
         let run = &level.run;
         println!(
             "{:>5} {:>9}  {:<19} {:>9} {:>11} {:>6}",
@@ -85,7 +91,13 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     );
     let Some(level) = solved.plan_level() else {
         if solved.any_limit() {
-            println!("No plan: some level reached its time limit (exit 12).");
+            let reached = |o: Outcome| solved.levels.iter().any(|l| l.run.outcome == o);
+            let which = match (reached(Outcome::TimeLimit), reached(Outcome::MemoryLimit)) {
+                (true, true) => "its time or memory limit",
+                (false, true) => "its memory limit",
+                _ => "its time limit",
+            };
+            println!("No plan: some level reached {which} (exit 12).");
             return Ok(ExitCode(12));
         }
         println!("No plan on any level: every level is unsolvable.");
@@ -104,7 +116,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         let all = learn::levels(&library, options);
         if let Some(full) = all.last() {
             let domain = learn::domain("demoplan", &full.operators);
-            let run = backend.plan(&domain, &problem, time_limit);
+            let run = backend.plan(&domain, &problem, &limits);
             match (&run.outcome, run.cost) {
                 (Outcome::Solved, Some(optimum)) => println!(
                     "Full domain ({} operators): optimal cost {optimum} in {} s; the slim plan \

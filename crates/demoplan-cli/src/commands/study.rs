@@ -3,6 +3,7 @@
 //! to an exit code.
 
 use crate::cli::StudyArgs;
+use crate::commands::plan::parse_run_memory_limit;
 use crate::commands::reproduce::{
     cell_command, experiment_failure, fast_downward, print_cell, time_limit,
 };
@@ -73,6 +74,11 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         .map(|a| a.trim().to_string())
         .collect();
     activities.dedup();
+    let jobs = match args.jobs {
+        Some(n) => n as usize,
+        None => std::thread::available_parallelism().map_or(1, usize::from),
+    };
+    let memory_limit = parse_run_memory_limit(&args.memory_limit, jobs)?;
     let options = experiment::StudyOptions {
         out: args.out,
         seeds: numbers("--seeds", &args.seeds)?,
@@ -88,17 +94,14 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         time_limit: time_limit(&args.time_limit)?,
         fast_downward: fast_downward(args.with_fd, args.fd.as_deref())?,
         memory: Some(crate::memory::probe()),
+        memory_limit,
         children: None,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::study_cell(&options, id));
     }
-    let jobs = match args.jobs {
-        Some(n) => n as usize,
-        None => std::thread::available_parallelism().map_or(1, usize::from),
-    };
     let options = experiment::StudyOptions {
-        children: cell_command(jobs)?,
+        children: cell_command(jobs, memory_limit)?,
         ..options
     };
     let bar = Bar::new();

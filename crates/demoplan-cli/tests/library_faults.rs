@@ -14,18 +14,8 @@ use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-fn demoplan() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
-    cmd.env("NO_COLOR", "1");
-    cmd
-}
-
-fn tempdir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("faults-{name}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+mod common;
+use common::{demoplan, tempdir};
 
 /// Runs a command to its end; it must succeed.
 fn run(cmd: &mut Command) {

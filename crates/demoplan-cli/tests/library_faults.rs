@@ -522,6 +522,18 @@ struct Aftermath {
     names: Vec<String>,
 }
 
+impl Aftermath {
+    /// The learner could not write: exit 35, a message giving `reason` and saying the
+    /// library is unchanged, and the `old` library in place.
+    #[track_caller]
+    fn assert_write_refused(&self, reason: &str, old: &[u8]) {
+        assert_eq!(self.code, 35, "{}", self.stderr);
+        assert!(self.stderr.contains(reason), "{}", self.stderr);
+        assert!(self.stderr.contains("it is unchanged"), "{}", self.stderr);
+        assert!(self.library == old, "the library changed");
+    }
+}
+
 fn aftermath(dir: &Path, script_output: &std::process::Output) -> Aftermath {
     let out = dir.join("out");
     let read = |name: &str| {
@@ -587,15 +599,8 @@ fn a_full_disk_leaves_the_old_library_and_says_why() {
     );
     let output = in_mount_namespace(&dir, &script);
     let after = aftermath(&dir, &output);
-    assert_eq!(after.code, 35, "{}", after.stderr);
-    assert!(
-        after.stderr.contains("No space left on device"),
-        "{}",
-        after.stderr
-    );
+    after.assert_write_refused("No space left on device", &old);
     assert!(after.stderr.contains("library.json"), "{}", after.stderr);
-    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
-    assert!(after.library == old, "the library changed");
     assert_eq!(after.names, ["filler", "library.json", "library.json.lock"]);
     println!(
         "fault: full disk (tmpfs of 1 MiB, filled): exit 35, {}",
@@ -614,14 +619,7 @@ fn a_read_only_folder_leaves_the_old_library_and_says_why() {
     let script = disk_script("8m", r#"mount -o remount,ro "$DIR/disk""#);
     let output = in_mount_namespace(&dir, &script);
     let after = aftermath(&dir, &output);
-    assert_eq!(after.code, 35, "{}", after.stderr);
-    assert!(
-        after.stderr.contains("Read-only file system"),
-        "{}",
-        after.stderr
-    );
-    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
-    assert!(after.library == old, "the library changed");
+    after.assert_write_refused("Read-only file system", &old);
     assert_eq!(after.names, ["library.json", "library.json.lock"]);
     println!(
         "fault: read-only folder (tmpfs remounted ro): exit 35, {}",

@@ -176,16 +176,18 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
         objects.push((t.name.text.clone(), vec![ty, "object".into()]));
     }
     type State = BTreeSet<String>;
-    let atom = |a: &pddl::Atom, b: &HashMap<String, String>| -> String {
-        let args: Vec<String> = a
-            .args
+    // The objects an atom's arguments stand for under the binding `b`.
+    let bound_args = |a: &pddl::Atom, b: &HashMap<String, String>| -> Vec<String> {
+        a.args
             .iter()
             .map(|t| match t {
                 pddl::Term::Variable(v) => b[&v.text].clone(),
                 pddl::Term::Object(o) => o.text.clone(),
             })
-            .collect();
-        format!("{} {}", a.predicate.text, args.join(" "))
+            .collect()
+    };
+    let atom = |a: &pddl::Atom, b: &HashMap<String, String>| -> String {
+        format!("{} {}", a.predicate.text, bound_args(a, b).join(" "))
     };
     let mut ground: Vec<GroundAction> = Vec::new();
     for a in &domain.actions {
@@ -241,14 +243,7 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
     let holds = |s: &State, pre: &[(bool, pddl::Atom)], b: &HashMap<String, String>| {
         pre.iter().all(|(positive, a)| {
             if a.is_equality() {
-                let v: Vec<String> = a
-                    .args
-                    .iter()
-                    .map(|t| match t {
-                        pddl::Term::Variable(v) => b[&v.text].clone(),
-                        pddl::Term::Object(o) => o.text.clone(),
-                    })
-                    .collect();
+                let v = bound_args(a, b);
                 (v[0] == v[1]) == *positive
             } else {
                 s.contains(&atom(a, b)) == *positive

@@ -7,11 +7,11 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use grounding::GroundingConfig;
-use learn::{
-    domain, operator_subset, paper_goal_tower, problem, tower_goal, DomainOptions, Library,
-    RecordingInfo, Scene,
-};
+use learn::{domain, operator_subset, DomainOptions, Library, RecordingInfo};
 use segment::ActivityTree;
+
+mod common;
+use common::paper_problem;
 
 /// The library `demoplan learn` makes of `demoplan simulate`'s default study.
 fn default_library() -> Library {
@@ -36,19 +36,6 @@ fn default_library() -> Library {
         library.add_recording(info, &header, &segmented.space, &segmented.segments);
     }
     library
-}
-
-fn paper_problem(goal: usize) -> pddl::Problem {
-    let scene = Scene::cubes_on_table(6);
-    let tower = paper_goal_tower(goal);
-    let text = problem(
-        &format!("paper-goal-{goal}"),
-        "demoplan",
-        &scene,
-        &tower_goal(&scene, &tower),
-    )
-    .to_string();
-    pddl::parse_problem(&text).unwrap()
 }
 
 /// demoplan's plan for a task (A* with LM-cut), as plan steps.

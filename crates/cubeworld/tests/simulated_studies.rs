@@ -12,8 +12,11 @@ use recording::Activity;
 use std::time::Duration;
 
 use grounding::GroundingConfig;
-use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene};
+use learn::{DomainOptions, Library};
 use segment::ActivityTree;
+
+mod common;
+use common::paper_problem;
 
 /// Seeds tried: 20 studies; on each, the paper's goals 1 to 3 (towers of 2 to 4 cubes)
 /// with LM-cut. Goals 4 and 5 take from seconds to minutes each on priority 1 in the test
@@ -36,19 +39,6 @@ fn library(seed: u64) -> Library {
         learn::add_frames(&mut library, demo.header(), frames, &config, &tree, "");
     }
     library
-}
-
-fn paper_problem(goal: usize) -> pddl::Problem {
-    let scene = Scene::cubes_on_table(6);
-    let tower = paper_goal_tower(goal);
-    let text = problem(
-        &format!("paper-goal-{goal}"),
-        "demoplan",
-        &scene,
-        &tower_goal(&scene, &tower),
-    )
-    .to_string();
-    pddl::parse_problem(&text).unwrap()
 }
 
 #[test]

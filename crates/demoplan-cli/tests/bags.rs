@@ -5,13 +5,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn demoplan() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
-    cmd.env("NO_COLOR", "1");
-    cmd
-}
+mod common;
+use common::demoplan;
 
 fn bag_fixtures() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../bags/tests/fixtures")
@@ -37,15 +34,7 @@ impl Drop for TempDir {
 
 /// Exit code, standard output and standard error, with the temporary folder as `[TMP]`.
 fn transcript(out: &Output, tmp: &Path) -> String {
-    let text = format!(
-        "exit: {}\n--- stdout\n{}--- stderr\n{}",
-        out.status
-            .code()
-            .map_or("signal".to_string(), |c| c.to_string()),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    text.replace(&tmp.display().to_string(), "[TMP]")
+    common::transcript(out).replace(&tmp.display().to_string(), "[TMP]")
 }
 
 #[test]

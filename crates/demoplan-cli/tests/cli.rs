@@ -4,33 +4,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn demoplan() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
-    cmd.env("NO_COLOR", "1");
-    cmd
-}
-
-fn fixtures() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures")
-}
-
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// Exit code, standard output and standard error, as one text to snapshot.
-fn transcript(out: &Output) -> String {
-    format!(
-        "exit: {}\n--- stdout\n{}--- stderr\n{}",
-        out.status
-            .code()
-            .map_or("signal".to_string(), |c| c.to_string()),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    )
-}
+mod common;
+use common::{demoplan, fixtures, logged_number, succeeds, tempdir, transcript, workspace};
 
 /// Each folder under `fixtures/malformed` holds one mistake: a `domain.pddl`, and a
 /// `problem.pddl` when the mistake is in the problem. The folder name's first word says
@@ -101,12 +78,11 @@ fn check_finds_the_domain_by_fast_downward_naming_rules() {
     // Airport's rule: the first three characters of the problem's name, then -domain.pddl.
     std::fs::write(tmp.join("p01-domain.pddl"), &domain).unwrap();
     std::fs::write(tmp.join("p01-task.pddl"), &problem).unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["check", "p01-task.pddl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .args(["check", "p01-task.pddl"]),
+    );
     assert!(String::from_utf8_lossy(&out.stdout).contains("(p01-domain.pddl)"));
 
     std::fs::remove_file(tmp.join("p01-domain.pddl")).unwrap();
@@ -168,21 +144,13 @@ fn fmt_rewrites_in_place_keeps_the_header_and_is_idempotent() {
         "; Licence header\n;; kept\n(DEFINE (Domain D) (:PREDICATES (P ?X)) ; inner\n (:action A :parameters (?x) :precondition (and (P ?x) (and)) :effect (not (P ?x))))",
     )
     .unwrap();
-    let out = demoplan()
-        .args(["fmt", file.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(demoplan().args(["fmt", file.to_str().unwrap()]));
     assert!(
         String::from_utf8_lossy(&out.stderr).contains("1 comment inside the definition dropped")
     );
     let first = std::fs::read_to_string(&file).unwrap();
     insta::assert_snapshot!(first);
-    let check = demoplan()
-        .args(["fmt", "--check", file.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
+    succeeds(demoplan().args(["fmt", "--check", file.to_str().unwrap()]));
     let again = demoplan()
         .args(["fmt", file.to_str().unwrap()])
         .output()
@@ -226,14 +194,6 @@ fn fmt_leaves_a_malformed_file_untouched() {
         1,
         "left a temporary file behind"
     );
-}
-
-/// A fresh folder under the target directory for one test.
-fn tempdir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
 }
 
 /// An optimal plan for `examples/cubes/tower-3.pddl`, as Fast Downward writes it.
@@ -333,14 +293,6 @@ fn validate_input_errors_use_the_pddl_exit_codes() {
 // The planner: `demoplan plan` on tasks the tests write, protocol and exit codes (the IPC
 // suite is `tests/ipc.rs`, behind the `ipc` feature).
 
-/// `Plan cost: N` from a log.
-fn logged_number(log: &str, prefix: &str) -> Option<u64> {
-    log.lines()
-        .find_map(|l| l.strip_prefix(prefix))
-        .and_then(|rest| rest.split_whitespace().next())
-        .and_then(|n| n.parse().ok())
-}
-
 /// A gripper task written by the test (a robot with two grippers carries `balls` balls
 /// from room a to room b; the state space grows exponentially with the balls), as domain
 /// and problem files in `dir`. The planner tests need no benchmark suite.
@@ -425,28 +377,26 @@ fn planning_is_deterministic() {
 fn plan_reads_fast_downwards_output_sas() {
     let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
     let tmp = tempdir("sas-input");
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("plan")
-        .arg(&sas)
-        .args(["--search", "astar(blind())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .arg(&sas)
+            .args(["--search", "astar(blind())"]),
+    );
     assert_eq!(
         logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
         Some(6)
     );
     // The plan written from Fast Downward's task validates against the PDDL.
-    let check = demoplan()
-        .current_dir(&tmp)
-        .arg("validate")
-        .arg(workspace().join("examples/cubes/domain.pddl"))
-        .arg(workspace().join("examples/cubes/tower-3.pddl"))
-        .arg("sas_plan")
-        .output()
-        .unwrap();
-    assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
+    succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("validate")
+            .arg(workspace().join("examples/cubes/domain.pddl"))
+            .arg(workspace().join("examples/cubes/tower-3.pddl"))
+            .arg("sas_plan"),
+    );
 }
 
 /// Issue 8: `plan` reports what building a pattern-database heuristic did (the hill
@@ -456,14 +406,13 @@ fn plan_reads_fast_downwards_output_sas() {
 fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
     let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
     let tmp = tempdir("ipdb-statistics");
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("plan")
-        .arg(&sas)
-        .args(["--search", "astar(ipdb())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .arg(&sas)
+            .args(["--search", "astar(ipdb())"]),
+    );
     let log = String::from_utf8_lossy(&out.stdout);
     assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
     let at = |line: &str| {
@@ -482,13 +431,12 @@ fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
 #[test]
 fn translate_writes_output_sas_that_plan_reads_back() {
     let tmp = tempdir("translate");
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("translate")
-        .arg(workspace().join("examples/cubes/tower-3.pddl"))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("translate")
+            .arg(workspace().join("examples/cubes/tower-3.pddl")),
+    );
     assert!(String::from_utf8_lossy(&out.stdout).contains("Translator variables: 18"));
     let out = demoplan()
         .current_dir(&tmp)
@@ -497,12 +445,12 @@ fn translate_writes_output_sas_that_plan_reads_back() {
         .unwrap();
     // seq-opt-hmax is no alias: exit 36 with the known ones listed.
     assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["plan", "output.sas", "--search", "astar(hmax())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(demoplan().current_dir(&tmp).args([
+        "plan",
+        "output.sas",
+        "--search",
+        "astar(hmax())",
+    ]));
     assert_eq!(
         logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
         Some(6)
@@ -600,21 +548,20 @@ fn limits_stop_the_search_with_exit_23_and_22_and_statistics() {
 #[test]
 fn stats_json_reports_the_solved_run() {
     let tmp = tempdir("stats");
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("plan")
-        .arg(workspace().join("examples/cubes/tower-3.pddl"))
-        .args([
-            "--search",
-            "astar(blind())",
-            "--stats-json",
-            "stats.json",
-            "--plan-file",
-            "my.plan",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .arg(workspace().join("examples/cubes/tower-3.pddl"))
+            .args([
+                "--search",
+                "astar(blind())",
+                "--stats-json",
+                "stats.json",
+                "--plan-file",
+                "my.plan",
+            ]),
+    );
     let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
     for field in [
         "\"outcome\": \"solved\"",
@@ -763,12 +710,11 @@ fn malformed_recordings_name_file_line_and_field() {
 
 #[test]
 fn inspect_summarises_the_example_recording() {
-    let out = demoplan()
-        .current_dir(workspace())
-        .args(["inspect", "docs/examples/two-cubes.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(workspace())
+            .args(["inspect", "docs/examples/two-cubes.jsonl"]),
+    );
     insta::assert_snapshot!(transcript(&out));
 }
 
@@ -895,19 +841,17 @@ fn demonstrations() -> PathBuf {
 /// cube_a, takes it, carries it and stacks it on cube_b.
 #[test]
 fn segment_prints_the_segments_of_the_example_recording() {
-    let out = demoplan()
-        .current_dir(workspace())
-        .args(["segment", "docs/examples/two-cubes.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(workspace())
+            .args(["segment", "docs/examples/two-cubes.jsonl"]),
+    );
     insta::assert_snapshot!(transcript(&out));
-    let json = demoplan()
-        .current_dir(workspace())
-        .args(["segment", "--json", "docs/examples/two-cubes.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(json.status.code(), Some(0), "{}", transcript(&json));
+    let json = succeeds(demoplan().current_dir(workspace()).args([
+        "segment",
+        "--json",
+        "docs/examples/two-cubes.jsonl",
+    ]));
     let doc: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     let segments = doc["files"][0]["segments"].as_array().unwrap();
     let table = String::from_utf8_lossy(&out.stdout);
@@ -943,66 +887,49 @@ fn segment_prints_the_segments_of_the_example_recording() {
 #[test]
 fn segment_classify_and_timeline_on_a_simulated_demonstration() {
     let tmp = tempdir("segment-simulated");
-    let sim = demoplan()
-        .current_dir(&tmp)
-        .args([
-            "simulate",
-            "--participants",
-            "1",
-            "--per-participant",
-            "2",
-            "-o",
-            "demos",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(sim.status.code(), Some(0), "{}", transcript(&sim));
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["segment", "demos/p01-d01.jsonl", "demos/p01-d02.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    succeeds(demoplan().current_dir(&tmp).args([
+        "simulate",
+        "--participants",
+        "1",
+        "--per-participant",
+        "2",
+        "-o",
+        "demos",
+    ]));
+    let out = succeeds(demoplan().current_dir(&tmp).args([
+        "segment",
+        "demos/p01-d01.jsonl",
+        "demos/p01-d02.jsonl",
+    ]));
     let text = String::from_utf8_lossy(&out.stdout);
     for activity in ["Reach", "Take", "Put", "Stack", "Idle"] {
         assert!(text.contains(activity), "no {activity} in\n{text}");
     }
-    let classify = demoplan()
-        .current_dir(&tmp)
-        .args(["classify", "demos/p01-d01.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
-    assert!(String::from_utf8_lossy(&classify.stdout).contains("agree with the tree"));
-    let learn = demoplan()
-        .current_dir(&tmp)
-        .args([
-            "classify",
-            "--learn",
-            "demos/p01-d01.jsonl",
-            "-o",
-            "tree.json",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
-    let with_tree = demoplan()
-        .current_dir(&tmp)
-        .args(["segment", "--tree", "tree.json", "demos/p01-d02.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(
-        with_tree.status.code(),
-        Some(0),
-        "{}",
-        transcript(&with_tree)
+    let classify = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .args(["classify", "demos/p01-d01.jsonl"]),
     );
-    let timeline = demoplan()
-        .current_dir(&tmp)
-        .args(["timeline", "demos/p01-d01.jsonl", "-o", "p01-d01.svg"])
-        .output()
-        .unwrap();
-    assert_eq!(timeline.status.code(), Some(0), "{}", transcript(&timeline));
+    assert!(String::from_utf8_lossy(&classify.stdout).contains("agree with the tree"));
+    succeeds(demoplan().current_dir(&tmp).args([
+        "classify",
+        "--learn",
+        "demos/p01-d01.jsonl",
+        "-o",
+        "tree.json",
+    ]));
+    succeeds(demoplan().current_dir(&tmp).args([
+        "segment",
+        "--tree",
+        "tree.json",
+        "demos/p01-d02.jsonl",
+    ]));
+    succeeds(demoplan().current_dir(&tmp).args([
+        "timeline",
+        "demos/p01-d01.jsonl",
+        "-o",
+        "p01-d01.svg",
+    ]));
     let svg = std::fs::read_to_string(tmp.join("p01-d01.svg")).unwrap();
     // The timeline is a `report` figure: a standalone SVG document, XML prolog first.
     assert!(svg.starts_with("<?xml") && svg.contains("<svg") && svg.trim_end().ends_with("</svg>"));
@@ -1028,52 +955,38 @@ fn segment_classify_and_timeline_on_a_simulated_demonstration() {
 #[test]
 fn classify_prints_table_one_and_learns_the_weather_tree() {
     let tmp = tempdir("classify-weather");
-    let table_one = demoplan().args(["classify"]).output().unwrap();
-    assert_eq!(
-        table_one.status.code(),
-        Some(0),
-        "{}",
-        transcript(&table_one)
-    );
+    let table_one = succeeds(demoplan().args(["classify"]));
     insta::assert_snapshot!("classify-table-one", transcript(&table_one));
     let weather = demonstrations().join("weather.nominal.arff");
     let tree = tmp.join("weather.json");
-    let learn = demoplan()
-        .args(["classify", "--learn"])
-        .arg(&weather)
-        .arg("-o")
-        .arg(&tree)
-        .output()
-        .unwrap();
-    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let learn = succeeds(
+        demoplan()
+            .args(["classify", "--learn"])
+            .arg(&weather)
+            .arg("-o")
+            .arg(&tree),
+    );
     let text = String::from_utf8_lossy(&learn.stdout).replace(&tree.display().to_string(), "TREE");
     insta::assert_snapshot!("classify-learn-weather", text);
     // The tree file prints as it was learned.
-    let printed = demoplan()
-        .args(["classify", "--tree"])
-        .arg(&tree)
-        .output()
-        .unwrap();
-    assert_eq!(printed.status.code(), Some(0), "{}", transcript(&printed));
+    let printed = succeeds(demoplan().args(["classify", "--tree"]).arg(&tree));
     assert!(String::from_utf8_lossy(&learn.stdout)
         .starts_with(&*String::from_utf8_lossy(&printed.stdout)));
 }
 
 #[test]
 fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
-    let out = demoplan()
-        .current_dir(demonstrations())
-        .args(["segment", "hand-state.arff", "messy-hand-state.arff"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(demoplan().current_dir(demonstrations()).args([
+        "segment",
+        "hand-state.arff",
+        "messy-hand-state.arff",
+    ]));
     insta::assert_snapshot!(transcript(&out));
-    let learn = demoplan()
-        .current_dir(demonstrations())
-        .args(["classify", "--learn", "hand-state.arff"])
-        .output()
-        .unwrap();
-    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let learn = succeeds(demoplan().current_dir(demonstrations()).args([
+        "classify",
+        "--learn",
+        "hand-state.arff",
+    ]));
     assert!(String::from_utf8_lossy(&learn.stdout).contains("25 of 25"));
 }
 
@@ -1174,31 +1087,29 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
 fn weka_tables_segment_and_classify_through_the_label_map() {
     let tables = workspace().join("crates/segment/tests/fixtures");
     // Without a minimum duration, so that every row of these short tables shows.
-    let out = demoplan()
-        .current_dir(&tables)
-        .arg("segment")
-        .arg("--config")
-        .arg(demonstrations().join("no-minimum-duration.toml"))
-        .args([
-            "tabs.arff",
-            "quoted.arff",
-            "sparse.arff",
-            "recogniser-labels.txt",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tables)
+            .arg("segment")
+            .arg("--config")
+            .arg(demonstrations().join("no-minimum-duration.toml"))
+            .args([
+                "tabs.arff",
+                "quoted.arff",
+                "sparse.arff",
+                "recogniser-labels.txt",
+            ]),
+    );
     insta::assert_snapshot!("segment-weka-tables", transcript(&out));
 
     // recogniser-labels.txt: 14 frames, 3 labelled Pour (unknown). Of the other 11, the
     // tree gives the label's activity for all but Release_2 (a still, empty, open hand:
     // Idle by Table 1, Put by the label map).
-    let classify = demoplan()
-        .current_dir(&tables)
-        .args(["classify", "recogniser-labels.txt"])
-        .output()
-        .unwrap();
-    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    let classify = succeeds(
+        demoplan()
+            .current_dir(&tables)
+            .args(["classify", "recogniser-labels.txt"]),
+    );
     let stdout = String::from_utf8_lossy(&classify.stdout);
     assert!(
         stdout.starts_with(
@@ -1213,13 +1124,12 @@ fn weka_tables_segment_and_classify_through_the_label_map() {
     );
     // With Pour mapped to Put every frame counts; ToolUse with the object in hand is Put
     // by Table 1 too.
-    let mapped = demoplan()
-        .current_dir(&tables)
-        .args(["classify", "recogniser-labels.txt", "--mapping"])
-        .arg(demonstrations().join("pour-is-put.toml"))
-        .output()
-        .unwrap();
-    assert_eq!(mapped.status.code(), Some(0), "{}", transcript(&mapped));
+    let mapped = succeeds(
+        demoplan()
+            .current_dir(&tables)
+            .args(["classify", "recogniser-labels.txt", "--mapping"])
+            .arg(demonstrations().join("pour-is-put.toml")),
+    );
     assert!(String::from_utf8_lossy(&mapped.stdout).starts_with(
         "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
     ));
@@ -1231,13 +1141,12 @@ fn weka_tables_segment_and_classify_through_the_label_map() {
 fn learn_reads_hand_state_tables() {
     let tmp = tempdir("learn-arff");
     let library = tmp.join("library.json");
-    let out = demoplan()
-        .current_dir(demonstrations())
-        .args(["learn", "hand-state.arff", "-o"])
-        .arg(&library)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(demonstrations())
+            .args(["learn", "hand-state.arff", "-o"])
+            .arg(&library),
+    );
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         stdout.starts_with("hand-state.arff: 5 activities, 5 new operator(s)\n"),
@@ -1267,19 +1176,18 @@ fn learn_reads_hand_state_tables() {
 fn learn_takes_a_folder_and_skips_the_simulators_truth() {
     let tmp = tempdir("learn-folder");
     let sim = tmp.join("sim");
-    let run = demoplan()
-        .args([
-            "simulate",
-            "--participants",
-            "1",
-            "--per-participant",
-            "3",
-            "-o",
-        ])
-        .arg(&sim)
-        .output()
-        .unwrap();
-    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    succeeds(
+        demoplan()
+            .args([
+                "simulate",
+                "--participants",
+                "1",
+                "--per-participant",
+                "3",
+                "-o",
+            ])
+            .arg(&sim),
+    );
     let mut all: Vec<PathBuf> = std::fs::read_dir(&sim)
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -1294,14 +1202,7 @@ fn learn_takes_a_folder_and_skips_the_simulators_truth() {
         .collect();
     assert_eq!(recordings.len(), 3);
     let learn = |args: &[&Path], out: &Path| {
-        let o = demoplan()
-            .arg("learn")
-            .args(args)
-            .arg("-o")
-            .arg(out)
-            .output()
-            .unwrap();
-        assert_eq!(o.status.code(), Some(0), "{}", transcript(&o));
+        let o = succeeds(demoplan().arg("learn").args(args).arg("-o").arg(out));
         o
     };
     let listed = tmp.join("listed.json");
@@ -1448,12 +1349,7 @@ fn execute_checks_each_step_in_the_cube_world() {
         serde_json::Value::Null
     );
     // The frames are a recording demoplan reads.
-    let inspect = demoplan()
-        .arg("inspect")
-        .arg(tmp.join("x.jsonl"))
-        .output()
-        .unwrap();
-    assert_eq!(inspect.status.code(), Some(0), "{}", transcript(&inspect));
+    succeeds(demoplan().arg("inspect").arg(tmp.join("x.jsonl")));
 }
 
 #[test]
@@ -1495,12 +1391,7 @@ fn execute_input_errors_exit_31_and_command_line_mistakes_36() {
 /// The library of the embedded default study, learned through the command line.
 fn learned_library(test: &str) -> PathBuf {
     let tmp = tempdir(test);
-    let sim = demoplan()
-        .args(["simulate", "-o"])
-        .arg(tmp.join("sim"))
-        .output()
-        .unwrap();
-    assert_eq!(sim.status.code(), Some(0), "{}", transcript(&sim));
+    succeeds(demoplan().args(["simulate", "-o"]).arg(tmp.join("sim")));
     let mut recordings: Vec<PathBuf> = std::fs::read_dir(tmp.join("sim"))
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -1513,14 +1404,13 @@ fn learned_library(test: &str) -> PathBuf {
     assert_eq!(recordings.len(), 12);
     let library = tmp.join("library.json");
     // Half first, then the rest added to the library: incremental learning.
-    let first = demoplan()
-        .arg("learn")
-        .args(&recordings[..6])
-        .arg("-o")
-        .arg(&library)
-        .output()
-        .unwrap();
-    assert_eq!(first.status.code(), Some(0), "{}", transcript(&first));
+    succeeds(
+        demoplan()
+            .arg("learn")
+            .args(&recordings[..6])
+            .arg("-o")
+            .arg(&library),
+    );
     let rest = demoplan()
         .arg("learn")
         .args(&recordings[5..])
@@ -1539,14 +1429,13 @@ fn learned_library(test: &str) -> PathBuf {
     );
     // The same as learning all at once.
     let batch = tmp.join("batch.json");
-    let all = demoplan()
-        .arg("learn")
-        .args(&recordings)
-        .arg("-o")
-        .arg(&batch)
-        .output()
-        .unwrap();
-    assert_eq!(all.status.code(), Some(0), "{}", transcript(&all));
+    succeeds(
+        demoplan()
+            .arg("learn")
+            .args(&recordings)
+            .arg("-o")
+            .arg(&batch),
+    );
     assert_eq!(
         std::fs::read(&batch).unwrap(),
         std::fs::read(&library).unwrap()
@@ -1568,31 +1457,22 @@ fn learn_operators_domain_problem_and_solve_work_together() {
     assert!(md.contains("## reach (Reach, count "), "{md}");
     assert!(md.contains("| fact | precondition | effect |"), "{md}");
     // Levels, then the priority-2 domain and a problem that parse in demoplan.
-    let levels = demoplan().arg("domain").arg(&library).output().unwrap();
-    assert_eq!(levels.status.code(), Some(0), "{}", transcript(&levels));
+    succeeds(demoplan().arg("domain").arg(&library));
     let domain = tmp.join("prio-2.pddl");
-    let d = demoplan()
-        .arg("domain")
-        .arg(&library)
-        .args(["--prio", "2", "-o"])
-        .arg(&domain)
-        .output()
-        .unwrap();
-    assert_eq!(d.status.code(), Some(0), "{}", transcript(&d));
+    succeeds(
+        demoplan()
+            .arg("domain")
+            .arg(&library)
+            .args(["--prio", "2", "-o"])
+            .arg(&domain),
+    );
     let problem = tmp.join("goal-1.pddl");
-    let p = demoplan()
-        .args(["problem", "--paper-goal", "1", "--hands", "1", "-o"])
-        .arg(&problem)
-        .output()
-        .unwrap();
-    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
-    let check = demoplan()
-        .arg("check")
-        .arg(&domain)
-        .arg(&problem)
-        .output()
-        .unwrap();
-    assert_eq!(check.status.code(), Some(0), "{}", transcript(&check));
+    succeeds(
+        demoplan()
+            .args(["problem", "--paper-goal", "1", "--hands", "1", "-o"])
+            .arg(&problem),
+    );
+    succeeds(demoplan().arg("check").arg(&domain).arg(&problem));
     // Algorithm 1 on the default (settled) activities: the paper's finding, the five
     // most frequent operators plan.
     let plan = tmp.join("plan");
@@ -1619,18 +1499,12 @@ fn learn_operators_domain_problem_and_solve_work_together() {
             .iter()
             .map(|r| r["source"].as_str().unwrap().to_string())
             .collect();
-    let learn_runs = demoplan()
-        .arg("learn")
-        .args(&recordings)
-        .args(["--activities", "runs", "-o"])
-        .arg(&runs)
-        .output()
-        .unwrap();
-    assert_eq!(
-        learn_runs.status.code(),
-        Some(0),
-        "{}",
-        transcript(&learn_runs)
+    succeeds(
+        demoplan()
+            .arg("learn")
+            .args(&recordings)
+            .args(["--activities", "runs", "-o"])
+            .arg(&runs),
     );
     let widened = demoplan()
         .arg("solve")
@@ -1668,30 +1542,27 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .unwrap()
         .to_string();
     let level_domain = tmp.join(format!("prio-{level}.pddl"));
-    let d = demoplan()
-        .arg("domain")
-        .arg(&library)
-        .args(["--prio", &level, "-o"])
-        .arg(&level_domain)
-        .output()
-        .unwrap();
-    assert_eq!(d.status.code(), Some(0), "{}", transcript(&d));
-    let v = demoplan()
-        .arg("validate")
-        .arg(&level_domain)
-        .arg(&problem)
-        .arg(&plan)
-        .output()
-        .unwrap();
-    assert_eq!(v.status.code(), Some(0), "{}", transcript(&v));
-    let x = demoplan()
-        .arg("execute")
-        .arg(&level_domain)
-        .arg(&problem)
-        .arg(&plan)
-        .output()
-        .unwrap();
-    assert_eq!(x.status.code(), Some(0), "{}", transcript(&x));
+    succeeds(
+        demoplan()
+            .arg("domain")
+            .arg(&library)
+            .args(["--prio", &level, "-o"])
+            .arg(&level_domain),
+    );
+    succeeds(
+        demoplan()
+            .arg("validate")
+            .arg(&level_domain)
+            .arg(&problem)
+            .arg(&plan),
+    );
+    succeeds(
+        demoplan()
+            .arg("execute")
+            .arg(&level_domain)
+            .arg(&problem)
+            .arg(&plan),
+    );
     // A damaged library is an input error and is not overwritten.
     let damaged = tmp.join("damaged.json");
     std::fs::write(
@@ -1964,17 +1835,16 @@ fn a_study_in_child_processes_gives_the_runs_of_one_in_this_process() {
     let tmp = tempdir("study-jobs");
     let run = |jobs: &str| {
         let out = tmp.join(format!("j{jobs}"));
-        let done = demoplan()
-            .arg("study")
-            .arg("-o")
-            .arg(&out)
-            // Cells far within their limit: an iPDB climb cut by its deadline would
-            // differ with the machine's load, not with how the cells are run.
-            .args(["--seeds", "3", "--hands", "1,2", "--heights", "2"])
-            .args(["--time-limit", "60", "-j", jobs])
-            .output()
-            .unwrap();
-        assert_eq!(done.status.code(), Some(0), "{}", transcript(&done));
+        let done = succeeds(
+            demoplan()
+                .arg("study")
+                .arg("-o")
+                .arg(&out)
+                // Cells far within their limit: an iPDB climb cut by its deadline would
+                // differ with the machine's load, not with how the cells are run.
+                .args(["--seeds", "3", "--hands", "1,2", "--heights", "2"])
+                .args(["--time-limit", "60", "-j", jobs]),
+        );
         let stdout = String::from_utf8_lossy(&done.stdout).into_owned();
         assert!(stdout.contains(&format!("{jobs} at a time")), "{stdout}");
         let text = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
@@ -2069,12 +1939,11 @@ fn study_refuses_bad_options_before_writing_anything() {
 fn widening_library_and_problem(tmp: &Path) -> (PathBuf, PathBuf) {
     let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");
     let problem = tmp.join("p.pddl");
-    let p = demoplan()
-        .args(["problem", "--tower", "cube_1,cube_2", "-o"])
-        .arg(&problem)
-        .output()
-        .unwrap();
-    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    succeeds(
+        demoplan()
+            .args(["problem", "--tower", "cube_1,cube_2", "-o"])
+            .arg(&problem),
+    );
     (library, problem)
 }
 
@@ -2211,8 +2080,7 @@ fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
     ];
     for args in runs {
         // Far more than a pipe holds (64 KB): the writer meets the closed pipe.
-        let full = demoplan().current_dir(&tmp).args(&args).output().unwrap();
-        assert_eq!(full.status.code(), Some(0), "{}", transcript(&full));
+        let full = succeeds(demoplan().current_dir(&tmp).args(&args));
         assert!(
             full.stdout.len() > 128 * 1024,
             "{}: {}",
@@ -2253,36 +2121,29 @@ fn import_reports_each_unity_log_and_prints_the_mapping_used() {
         tmp.join("p01-d03.json"),
     )
     .unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["import", "p01-d03.json", "-o", "out"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .args(["import", "p01-d03.json", "-o", "out"]),
+    );
     insta::assert_snapshot!(transcript(&out));
-    let inspect = demoplan()
-        .current_dir(&tmp)
-        .args(["inspect", "out/p01-d03.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(inspect.status.code(), Some(0), "{}", transcript(&inspect));
+    succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .args(["inspect", "out/p01-d03.jsonl"]),
+    );
     // The printed mapping is a mapping file that reads back.
     let stdout = String::from_utf8(out.stdout).unwrap();
     let toml = &stdout[stdout.find("# demoplan import mapping").unwrap()..];
     std::fs::write(tmp.join("used.toml"), toml).unwrap();
-    let again = demoplan()
-        .current_dir(&tmp)
-        .args([
-            "import",
-            "p01-d03.json",
-            "--mapping",
-            "used.toml",
-            "-o",
-            "again",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(again.status.code(), Some(0), "{}", transcript(&again));
+    succeeds(demoplan().current_dir(&tmp).args([
+        "import",
+        "p01-d03.json",
+        "--mapping",
+        "used.toml",
+        "-o",
+        "again",
+    ]));
     assert_eq!(
         std::fs::read(tmp.join("out/p01-d03.jsonl")).unwrap(),
         std::fs::read(tmp.join("again/p01-d03.jsonl")).unwrap()
@@ -2300,14 +2161,13 @@ fn learn_solve_and_execute_on_unity_logs() {
         .collect();
     logs.sort();
     assert_eq!(logs.len(), 4);
-    let learn = demoplan()
-        .current_dir(&tmp)
-        .arg("learn")
-        .args(&logs)
-        .args(["-o", "lib.json"])
-        .output()
-        .unwrap();
-    assert_eq!(learn.status.code(), Some(0), "{}", transcript(&learn));
+    let learn = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("learn")
+            .args(&logs)
+            .args(["-o", "lib.json"]),
+    );
     let text = String::from_utf8_lossy(&learn.stdout).into_owned();
     for kind in ["Reach", "Take", "Put", "Stack"] {
         let line = text
@@ -2489,12 +2349,13 @@ fn import_peak_heap_does_not_grow_with_the_log() {
     for steps in [2_000, 20_000] {
         let name = format!("log-{steps}.json");
         std::fs::write(tmp.join(&name), long_unity_log(steps)).unwrap();
-        let out = demoplan()
-            .current_dir(&tmp)
-            .args(["import", &name, "-o", "out", "--peak-heap"])
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+        let out = succeeds(demoplan().current_dir(&tmp).args([
+            "import",
+            &name,
+            "-o",
+            "out",
+            "--peak-heap",
+        ]));
         let stderr = String::from_utf8_lossy(&out.stderr);
         let peak: u64 = stderr
             .split("peak heap: ")
@@ -2539,27 +2400,25 @@ fn learn_takes_a_folder_of_unity_logs_like_the_logs_in_it() {
 fn one_mapping_file_serves_classify_and_the_unity_commands() {
     let mapping = demonstrations().join("one-mapping.toml");
     let tables = format!("{}/../segment/tests/fixtures", env!("CARGO_MANIFEST_DIR"));
-    let classify = demoplan()
-        .current_dir(&tables)
-        .args(["classify", "recogniser-labels.txt", "--mapping"])
-        .arg(&mapping)
-        .output()
-        .unwrap();
-    assert_eq!(classify.status.code(), Some(0), "{}", transcript(&classify));
+    let classify = succeeds(
+        demoplan()
+            .current_dir(&tables)
+            .args(["classify", "recogniser-labels.txt", "--mapping"])
+            .arg(&mapping),
+    );
     // Pour is Put by the file's [labels]: no frame is left out.
     assert!(String::from_utf8_lossy(&classify.stdout).starts_with(
         "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
     ));
     assert!(classify.stderr.is_empty(), "{}", transcript(&classify));
     let log = unity_fixtures().join("p01-d03.json");
-    let segment = demoplan()
-        .arg("segment")
-        .arg(&log)
-        .arg("--mapping")
-        .arg(&mapping)
-        .output()
-        .unwrap();
-    assert_eq!(segment.status.code(), Some(0), "{}", transcript(&segment));
+    let segment = succeeds(
+        demoplan()
+            .arg("segment")
+            .arg(&log)
+            .arg("--mapping")
+            .arg(&mapping),
+    );
     assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
 }
 

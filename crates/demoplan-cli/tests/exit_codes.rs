@@ -8,15 +8,8 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
-fn demoplan() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
-    cmd.env("NO_COLOR", "1");
-    cmd
-}
-
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
+mod common;
+use common::{demoplan, fixtures, workspace};
 
 fn scratch() -> PathBuf {
     let dir =
@@ -72,7 +65,7 @@ fn run(cmd: &mut Command) -> Output {
 /// The case for `code`: runs it and returns what it did. `None` for a code no correct
 /// run gives (32: a plan that fails validation is a bug of demoplan's).
 fn case(code: &str, dir: &Path) -> Option<Output> {
-    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures");
+    let fixtures = fixtures();
     let d = dir.join("domain.pddl");
     let p = dir.join("problem.pddl");
     Some(match code {

@@ -14,18 +14,8 @@ use std::process::{Command, Stdio};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-fn demoplan() -> Command {
-    let mut cmd = Command::new(env!("CARGO_BIN_EXE_demoplan"));
-    cmd.env("NO_COLOR", "1");
-    cmd
-}
-
-fn tempdir(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("faults-{name}"));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+mod common;
+use common::{demoplan, tempdir};
 
 /// Runs a command to its end; it must succeed.
 fn run(cmd: &mut Command) {
@@ -532,6 +522,18 @@ struct Aftermath {
     names: Vec<String>,
 }
 
+impl Aftermath {
+    /// The learner could not write: exit 35, a message giving `reason` and saying the
+    /// library is unchanged, and the `old` library in place.
+    #[track_caller]
+    fn assert_write_refused(&self, reason: &str, old: &[u8]) {
+        assert_eq!(self.code, 35, "{}", self.stderr);
+        assert!(self.stderr.contains(reason), "{}", self.stderr);
+        assert!(self.stderr.contains("it is unchanged"), "{}", self.stderr);
+        assert!(self.library == old, "the library changed");
+    }
+}
+
 fn aftermath(dir: &Path, script_output: &std::process::Output) -> Aftermath {
     let out = dir.join("out");
     let read = |name: &str| {
@@ -597,15 +599,8 @@ fn a_full_disk_leaves_the_old_library_and_says_why() {
     );
     let output = in_mount_namespace(&dir, &script);
     let after = aftermath(&dir, &output);
-    assert_eq!(after.code, 35, "{}", after.stderr);
-    assert!(
-        after.stderr.contains("No space left on device"),
-        "{}",
-        after.stderr
-    );
+    after.assert_write_refused("No space left on device", &old);
     assert!(after.stderr.contains("library.json"), "{}", after.stderr);
-    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
-    assert!(after.library == old, "the library changed");
     assert_eq!(after.names, ["filler", "library.json", "library.json.lock"]);
     println!(
         "fault: full disk (tmpfs of 1 MiB, filled): exit 35, {}",
@@ -624,14 +619,7 @@ fn a_read_only_folder_leaves_the_old_library_and_says_why() {
     let script = disk_script("8m", r#"mount -o remount,ro "$DIR/disk""#);
     let output = in_mount_namespace(&dir, &script);
     let after = aftermath(&dir, &output);
-    assert_eq!(after.code, 35, "{}", after.stderr);
-    assert!(
-        after.stderr.contains("Read-only file system"),
-        "{}",
-        after.stderr
-    );
-    assert!(after.stderr.contains("it is unchanged"), "{}", after.stderr);
-    assert!(after.library == old, "the library changed");
+    after.assert_write_refused("Read-only file system", &old);
     assert_eq!(after.names, ["library.json", "library.json.lock"]);
     println!(
         "fault: read-only folder (tmpfs remounted ro): exit 35, {}",

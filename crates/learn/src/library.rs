@@ -200,17 +200,9 @@ impl Library {
                 start: millis(s.start),
                 end: millis(s.end),
             };
-            let entry = self.operators.entry(operator.clone()).or_insert_with(|| {
+            if self.count_operator(operator, 1, vec![provenance]) {
                 new_operators = new_operators.saturating_add(1);
-                Entry {
-                    operator,
-                    count: 0,
-                    provenance: Vec::new(),
-                }
-            });
-            entry.count = entry.count.saturating_add(1);
-            entry.provenance.push(provenance);
-            sort_provenance(&mut entry.provenance);
+            }
         }
         let segments_counted = activities.len() as u64;
         self.recordings.insert(
@@ -262,17 +254,7 @@ impl Library {
             if mine.is_empty() {
                 continue;
             }
-            let entry = self
-                .operators
-                .entry(e.operator.clone())
-                .or_insert_with(|| Entry {
-                    operator: e.operator.clone(),
-                    count: 0,
-                    provenance: Vec::new(),
-                });
-            entry.count = entry.count.saturating_add(mine.len() as u64);
-            entry.provenance.extend(mine);
-            sort_provenance(&mut entry.provenance);
+            self.count_operator(e.operator.clone(), mine.len() as u64, mine);
         }
         Ok(())
     }
@@ -281,15 +263,30 @@ impl Library {
     /// is computed from counts).
     #[cfg(test)]
     pub(crate) fn insert_counted(&mut self, operator: Operator, count: u64) {
-        let entry = self
-            .operators
-            .entry(operator.clone())
-            .or_insert_with(|| Entry {
+        self.count_operator(operator, count, Vec::new());
+    }
+
+    /// Counts `count` more demonstrations of `operator`, by the segments of
+    /// `provenance`; true if the library did not have the operator yet.
+    fn count_operator(
+        &mut self,
+        operator: Operator,
+        count: u64,
+        provenance: Vec<Provenance>,
+    ) -> bool {
+        let mut new = false;
+        let entry = self.operators.entry(operator.clone()).or_insert_with(|| {
+            new = true;
+            Entry {
                 operator,
                 count: 0,
                 provenance: Vec::new(),
-            });
+            }
+        });
         entry.count = entry.count.saturating_add(count);
+        entry.provenance.extend(provenance);
+        sort_provenance(&mut entry.provenance);
+        new
     }
 
     /// The recordings learned from, by hash.
@@ -538,18 +535,8 @@ impl Library {
                     ));
                 }
             }
-            let entry = library
-                .operators
-                .entry(operator.clone())
-                .or_insert_with(|| Entry {
-                    operator,
-                    count: 0,
-                    provenance: Vec::new(),
-                });
             // Below `total`, checked above: no overflow.
-            entry.count = entry.count.saturating_add(record.count);
-            entry.provenance.extend(record.provenance);
-            sort_provenance(&mut entry.provenance);
+            library.count_operator(operator, record.count, record.provenance);
         }
         Ok(library)
     }

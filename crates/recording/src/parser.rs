@@ -100,6 +100,61 @@ const POW10_F64: [f64; 23] = [
 
 /// A scanned JSON number: its text range, and for plain decimals (no exponent, at most 19
 /// digits) the digits as an integer and the number of digits after the point.
+/// The float types numbers are read as, with the fast path: a decimal `m / 10^k` whose
+/// mantissa and power of ten are both exact in the type is correctly rounded by one
+/// division.
+trait ExactDecimal: Copy + 'static + std::str::FromStr {
+    /// The largest mantissa the type holds exactly (2^24, 2^53).
+    const MAX_EXACT: u64;
+    /// The powers of ten the type holds exactly.
+    const POW10: &'static [Self];
+    /// `m / p`, negated if `negative`, with `m` converted to the type (exact up to
+    /// `MAX_EXACT`).
+    fn quotient(negative: bool, m: u64, p: Self) -> Self;
+    fn is_finite(self) -> bool;
+
+    /// `m / 10^fraction`, negated if `negative`, where the fast path applies.
+    #[inline]
+    fn exact(negative: bool, m: u64, fraction: usize) -> Option<Self> {
+        if m > Self::MAX_EXACT {
+            return None;
+        }
+        Some(Self::quotient(negative, m, *Self::POW10.get(fraction)?))
+    }
+}
+
+impl ExactDecimal for f32 {
+    const MAX_EXACT: u64 = 1 << 24;
+    const POW10: &'static [f32] = &POW10_F32;
+    fn quotient(negative: bool, m: u64, p: f32) -> f32 {
+        let v = m as f32 / p;
+        if negative {
+            -v
+        } else {
+            v
+        }
+    }
+    fn is_finite(self) -> bool {
+        f32::is_finite(self)
+    }
+}
+
+impl ExactDecimal for f64 {
+    const MAX_EXACT: u64 = 1 << 53;
+    const POW10: &'static [f64] = &POW10_F64;
+    fn quotient(negative: bool, m: u64, p: f64) -> f64 {
+        let v = m as f64 / p;
+        if negative {
+            -v
+        } else {
+            v
+        }
+    }
+    fn is_finite(self) -> bool {
+        f64::is_finite(self)
+    }
+}
+
 struct Number {
     start: usize,
     end: usize,
@@ -447,47 +502,36 @@ impl<'a> Cursor<'a> {
     #[inline]
     fn f32(&mut self, field: Field<'_>) -> Result<f32, LineError> {
         if let Some((negative, m, fraction, end)) = self.plain_decimal() {
-            if m <= 1 << 24 && fraction < POW10_F32.len() {
-                // Both operands are exact in f32, so the quotient is correctly rounded.
-                let v = m as f32 / POW10_F32[fraction];
+            if let Some(v) = f32::exact(negative, m, fraction) {
                 self.i = end;
-                return Ok(if negative { -v } else { v });
+                return Ok(v);
             }
         }
-        let n = self.scan_number(field)?;
-        let v = if n.plain && n.mantissa <= 1 << 24 && n.fraction_digits < POW10_F32.len() {
-            // Both operands are exact in f32, so the quotient is correctly rounded.
-            let v = n.mantissa as f32 / POW10_F32[n.fraction_digits];
-            if n.negative {
-                -v
-            } else {
-                v
-            }
-        } else {
-            self.slow_parse::<f32>(&n, field)?
-        };
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(self.not_finite(&n, field))
-        }
+        Ok(self.float::<f32>(field)?.0)
     }
 
     /// A number as `f64`, correctly rounded; also its column and width.
     fn f64(&mut self, field: Field<'_>) -> Result<(f64, usize, usize), LineError> {
+        let (v, n) = self.float::<f64>(field)?;
+        Ok((v, n.start, n.end.saturating_sub(n.start)))
+    }
+
+    /// A number as `T`, correctly rounded, and where it stands; a number that is not
+    /// finite in `T` is an error.
+    #[inline]
+    fn float<T: ExactDecimal>(&mut self, field: Field<'_>) -> Result<(T, Number), LineError> {
         let n = self.scan_number(field)?;
-        let v = if n.plain && n.mantissa <= 1 << 53 && n.fraction_digits < POW10_F64.len() {
-            let v = n.mantissa as f64 / POW10_F64[n.fraction_digits];
-            if n.negative {
-                -v
-            } else {
-                v
-            }
+        let exact = if n.plain {
+            T::exact(n.negative, n.mantissa, n.fraction_digits)
         } else {
-            self.slow_parse::<f64>(&n, field)?
+            None
+        };
+        let v = match exact {
+            Some(v) => v,
+            None => self.slow_parse::<T>(&n, field)?,
         };
         if v.is_finite() {
-            Ok((v, n.start, n.end.saturating_sub(n.start)))
+            Ok((v, n))
         } else {
             Err(self.not_finite(&n, field))
         }

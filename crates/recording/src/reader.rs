@@ -231,6 +231,11 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
     let err = |field: &str, key: &str, kind: ErrorKind| header_error(text, line, field, key, kind);
     let invalid =
         |field: &str, key: &str, message: String| err(field, key, ErrorKind::Invalid(message));
+    // A field of the wrong type is pointed at by its key; a missing one, at `format`.
+    let wrong_type =
+        |key: &str, expected: &str| invalid(key, key, format!("`{key}` must be {expected}"));
+    let missing =
+        |key: &str, what: &str| invalid(key, "format", format!("missing field `{key}`{what}"));
     match obj.get("format") {
         None => {
             return Err(ReadError::new(
@@ -253,13 +258,7 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
     match obj.get("version") {
         Some(Value::Number(n)) if n.as_u64() == Some(u64::from(FORMAT_VERSION)) => {}
         Some(v) => return Err(err("version", "version", ErrorKind::Version(v.to_string()))),
-        None => {
-            return Err(invalid(
-                "version",
-                "format",
-                "missing field `version` (the format version, 1)".into(),
-            ))
-        }
+        None => return Err(missing("version", " (the format version, 1)")),
     }
     for key in obj.keys() {
         if !matches!(
@@ -286,8 +285,8 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
     let string = |key: &str| -> Result<String, ReadError> {
         match obj.get(key) {
             Some(Value::String(s)) => Ok(s.clone()),
-            Some(_) => Err(invalid(key, key, format!("`{key}` must be a string"))),
-            None => Err(invalid(key, "format", format!("missing field `{key}`"))),
+            Some(_) => Err(wrong_type(key, "a string")),
+            None => Err(missing(key, "")),
         }
     };
     let id = string("id")?;
@@ -295,20 +294,8 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
     let task = string("task")?;
     let frame_rate = match obj.get("frame_rate") {
         Some(Value::Number(n)) => n.as_f64().unwrap_or(f64::NAN),
-        Some(_) => {
-            return Err(invalid(
-                "frame_rate",
-                "frame_rate",
-                "`frame_rate` must be a number".into(),
-            ))
-        }
-        None => {
-            return Err(invalid(
-                "frame_rate",
-                "format",
-                "missing field `frame_rate` (nominal frames per second)".into(),
-            ))
-        }
+        Some(_) => return Err(wrong_type("frame_rate", "a number")),
+        None => return Err(missing("frame_rate", " (nominal frames per second)")),
     };
     let entities = match obj.get("entities") {
         // Before looking at each of them: a count over the limit is the whole story.
@@ -324,20 +311,8 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
             .enumerate()
             .map(|(i, v)| parse_entity(i, v, &err))
             .collect::<Result<Vec<_>, _>>()?,
-        Some(_) => {
-            return Err(invalid(
-                "entities",
-                "entities",
-                "`entities` must be a list".into(),
-            ))
-        }
-        None => {
-            return Err(invalid(
-                "entities",
-                "format",
-                "missing field `entities`".into(),
-            ))
-        }
+        Some(_) => return Err(wrong_type("entities", "a list")),
+        None => return Err(missing("entities", "")),
     };
     let meta = match obj.get("meta") {
         None => Default::default(),
@@ -352,13 +327,7 @@ fn parse_header(text: &[u8], line: u64) -> Result<Header, ReadError> {
                 )),
             })
             .collect::<Result<_, _>>()?,
-        Some(_) => {
-            return Err(invalid(
-                "meta",
-                "meta",
-                "`meta` must be an object of strings".into(),
-            ))
-        }
+        Some(_) => return Err(wrong_type("meta", "an object of strings")),
     };
     let header = Header {
         id,

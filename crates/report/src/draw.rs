@@ -314,6 +314,15 @@ fn fill_attr(fill: Option<Color>) -> String {
     }
 }
 
+/// The `points` attribute's value: `x,y` pairs separated by spaces.
+fn points_attr(points: &[Point]) -> String {
+    let pts: Vec<String> = points
+        .iter()
+        .map(|p| format!("{},{}", num(p.x), num(p.y)))
+        .collect();
+    pts.join(" ")
+}
+
 fn svg_shape(s: &mut String, shape: &Shape) {
     match shape {
         Shape::Line { from, to, stroke } => {
@@ -328,26 +337,18 @@ fn svg_shape(s: &mut String, shape: &Shape) {
             );
         }
         Shape::Polyline { points, stroke } => {
-            let pts: Vec<String> = points
-                .iter()
-                .map(|p| format!("{},{}", num(p.x), num(p.y)))
-                .collect();
             let _ = writeln!(
                 s,
                 r#"<polyline points="{}" fill="none"{} stroke-linejoin="round" stroke-linecap="round"/>"#,
-                pts.join(" "),
+                points_attr(points),
                 stroke_attrs(stroke)
             );
         }
         Shape::Polygon { points, fill } => {
-            let pts: Vec<String> = points
-                .iter()
-                .map(|p| format!("{},{}", num(p.x), num(p.y)))
-                .collect();
             let _ = writeln!(
                 s,
                 r#"<polygon points="{}" fill="{}" stroke="none"/>"#,
-                pts.join(" "),
+                points_attr(points),
                 fill.hex()
             );
         }

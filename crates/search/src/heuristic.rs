@@ -82,6 +82,19 @@ impl Heuristic for Blind {
     }
 }
 
+/// The facts of `task` numbered densely, variable by variable, as the relaxed
+/// explorations number them: fact `var = value` is `offsets[var] + value`. Returns the
+/// offsets and the number of facts. O(variables).
+pub(crate) fn fact_offsets(task: &Task) -> (Vec<u32>, u32) {
+    let mut offsets = Vec::with_capacity(task.variables.len());
+    let mut facts = 0u32;
+    for v in &task.variables {
+        offsets.push(facts);
+        facts += v.domain_size();
+    }
+    (offsets, facts)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -46,12 +46,7 @@ impl HMax {
     /// valid. O(size of the task).
     pub fn new(task: &Task) -> Result<HMax, TaskError> {
         task.validate()?;
-        let mut fact_offset = Vec::with_capacity(task.variables.len());
-        let mut num_facts = 0u32;
-        for v in &task.variables {
-            fact_offset.push(num_facts);
-            num_facts += v.domain_size();
-        }
+        let (fact_offset, num_facts) = crate::heuristic::fact_offsets(task);
         let fact = |f: &task::Fact| fact_offset[f.var.index()] + f.value;
 
         let mut op_cost = Vec::with_capacity(task.operators.len());
@@ -182,17 +177,8 @@ impl Heuristic for HMax {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use task::{Fact, Operator, VarId, Variable};
-
-    fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
-        let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
-        Operator {
-            name: name.into(),
-            preconditions: facts(pre),
-            effects: facts(eff),
-            cost,
-        }
-    }
+    use crate::test_tasks::op;
+    use task::{Fact, VarId, Variable};
 
     /// Variables a, b, c, d binary (value 0 = true); goal c and d.
     /// make-a (no pre, 2) -> a; a-to-b (a, 3) -> b; ab-to-c (a b, 1) -> c;

@@ -1034,12 +1034,7 @@ struct IncrementalWalker {
 impl IncrementalWalker {
     /// A walker standing in the initial state of `task` (valid).
     fn new(task: &Task) -> IncrementalWalker {
-        let mut fact_offset = Vec::with_capacity(task.variables.len());
-        let mut facts = 0u32;
-        for v in &task.variables {
-            fact_offset.push(facts);
-            facts += v.domain_size();
-        }
+        let (fact_offset, facts) = crate::heuristic::fact_offsets(task);
         let mut pairs: Vec<(u32, u32)> = Vec::new();
         let mut effect_start = vec![0u32];
         let mut effects = Vec::new();
@@ -1285,17 +1280,8 @@ impl GeneratedWalker {
 mod tests {
     use super::*;
     use crate::successor::tests::{random_task, Rng as TestRng};
-    use task::{Fact, Operator, Variable};
-
-    fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
-        let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
-        Operator {
-            name: name.into(),
-            preconditions: facts(pre),
-            effects: facts(eff),
-            cost,
-        }
-    }
+    use crate::test_tasks::op;
+    use task::{Fact, Variable};
 
     /// Goal a = 1, reached by `set-a`, which needs b = 1, which costs 5 to set: the goal
     /// pattern alone sees 1, with b added 6.

@@ -73,10 +73,11 @@ mod segmented;
 pub mod state;
 mod successor;
 
-/// Random valid tasks for the unit tests' property tests, the integration tests' own.
+/// Tasks for the unit tests, the integration tests' own: random valid ones for property
+/// tests, and operators written briefly.
 #[cfg(test)]
 #[path = "../tests/common/mod.rs"]
-mod random_tasks;
+mod test_tasks;
 
 pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
 pub use config::{

@@ -305,12 +305,7 @@ impl LmCut {
     /// LM-cut for `task` with the given supporter rule; see [`LmCut::new`].
     fn with_supporter_rule(task: &Task, rule: SupporterRule) -> Result<LmCut, TaskError> {
         task.validate()?;
-        let mut fact_offset = Vec::with_capacity(task.variables.len());
-        let mut num_facts = 0u32;
-        for v in &task.variables {
-            fact_offset.push(num_facts);
-            num_facts += v.domain_size();
-        }
+        let (fact_offset, num_facts) = crate::heuristic::fact_offsets(task);
         let fact_i = num_facts;
         let fact_g = num_facts + 1;
         let num_facts = num_facts as usize + 2;
@@ -688,7 +683,7 @@ mod tests {
         /// the one `LmCut::new` takes, shares every line but the choice of the supporter
         /// kept (its admissibility and dominance over h^max are `tests/properties.rs`').
         #[test]
-        fn the_round_start_rule_equals_the_oracle(task in crate::random_tasks::tasks()) {
+        fn the_round_start_rule_equals_the_oracle(task in crate::test_tasks::tasks()) {
             let mut lmcut = LmCut::with_supporter_rule(&task, SupporterRule::KeepRoundStart)
                 .map_err(|e| TestCaseError::fail(e.to_string()))?;
             for state in all_states(&task) {

@@ -934,17 +934,8 @@ fn empty_node() -> Node {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use task::{Fact, Operator, Variable};
-
-    fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
-        let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
-        Operator {
-            name: name.into(),
-            preconditions: facts(pre),
-            effects: facts(eff),
-            cost,
-        }
-    }
+    use crate::test_tasks::op;
+    use task::{Fact, Variable};
 
     fn var(name: &str, size: u32) -> Variable {
         Variable {

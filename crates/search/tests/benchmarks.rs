@@ -12,6 +12,22 @@ use search::{
 };
 use task::Task;
 
+/// Small instances of eleven domains (domain, instance), quick to translate and solve:
+/// the heuristics' tests run on them and add one each.
+const SMALL_INSTANCES: [(&str, &str); 11] = [
+    ("blocks", "probBLOCKS-5-1"),
+    ("gripper", "prob02"),
+    ("logistics00", "probLOGISTICS-4-0"),
+    ("depot", "p01"),
+    ("elevators-opt08-strips", "p01"),
+    ("parcprinter-08-strips", "p01"),
+    ("openstacks-opt08-strips", "p01"),
+    ("pegsol-08-strips", "p02"),
+    ("sokoban-opt08-strips", "p01"),
+    ("miconic", "s3-0"),
+    ("visitall-opt11-strips", "problem03-full"),
+];
+
 fn translated(domain: &str, instance: &str) -> Task {
     translated_with_optimum(domain, instance).0
 }
@@ -67,21 +83,8 @@ fn sample_states(task: &Task, walks: usize, length: usize) -> Vec<Vec<u32>> {
 
 #[test]
 fn lmcut_dominates_hmax_on_sampled_states_of_benchmark_tasks() {
-    let instances = [
-        ("blocks", "probBLOCKS-5-1"),
-        ("gripper", "prob02"),
-        ("logistics00", "probLOGISTICS-4-0"),
-        ("depot", "p01"),
-        ("elevators-opt08-strips", "p01"),
-        ("parcprinter-08-strips", "p01"),
-        ("openstacks-opt08-strips", "p01"),
-        ("pegsol-08-strips", "p02"),
-        ("sokoban-opt08-strips", "p01"),
-        ("visitall-opt11-strips", "problem03-full"),
-        ("miconic", "s3-0"),
-        ("storage", "p05"),
-    ];
-    for (domain, instance) in instances {
+    let instances = SMALL_INSTANCES.iter().chain(&[("storage", "p05")]);
+    for &(domain, instance) in instances {
         let task = translated(domain, instance);
         let mut lmcut = LmCut::new(&task).unwrap();
         let mut hmax = HMax::new(&task).unwrap();
@@ -101,25 +104,14 @@ fn lmcut_dominates_hmax_on_sampled_states_of_benchmark_tasks() {
 
 #[test]
 fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
-    let instances = [
-        ("blocks", "probBLOCKS-5-1"),
-        ("gripper", "prob02"),
-        ("logistics00", "probLOGISTICS-4-0"),
-        ("depot", "p01"),
-        ("elevators-opt08-strips", "p01"),
-        ("parcprinter-08-strips", "p01"),
-        ("openstacks-opt08-strips", "p01"),
-        ("pegsol-08-strips", "p02"),
-        ("sokoban-opt08-strips", "p01"),
-        ("miconic", "s3-0"),
-        ("airport", "p01-airport1-p1"),
-        ("visitall-opt11-strips", "problem03-full"),
-    ];
+    let instances = SMALL_INSTANCES
+        .iter()
+        .chain(&[("airport", "p01-airport1-p1")]);
     let configs = [
         "astar(ipdb(pdb_max_size=20000, collection_max_size=200000, num_samples=200))",
         "astar(cpdbs(systematic(2)))",
     ];
-    for (domain, instance) in instances {
+    for &(domain, instance) in instances {
         let (task, optimum) = translated_with_optimum(domain, instance);
         // Pegsol's 156 systematic patterns have 466605 maximal additive subsets, which
         // take seconds to prune: not for a quick test.

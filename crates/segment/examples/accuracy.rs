@@ -7,19 +7,12 @@
 mod common;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let args: Vec<String> = std::env::args().collect();
-    let first: u64 = args.get(1).map_or(Ok(1), |s| s.parse())?;
-    let count: u64 = args.get(2).map_or(Ok(100), |s| s.parse())?;
-    let participants: u32 = args.get(3).map_or(Ok(3), |s| s.parse())?;
-    let per: u32 = args.get(4).map_or(Ok(4), |s| s.parse())?;
+    let args = common::StudyArgs::from_env(100)?;
+    let config = args.config;
     let params = simulate::SimParams::default();
-    let config = match args.get(5) {
-        Some(path) => grounding::GroundingConfig::from_toml(&std::fs::read_to_string(path)?)?,
-        None => grounding::GroundingConfig::default(),
-    };
     let tree = segment::ActivityTree::table_one();
-    for seed in first..first + count {
-        let study = simulate::study(&params, seed, participants, per)?;
+    for seed in args.seeds {
+        let study = simulate::study(&params, seed, args.participants, args.per_participant)?;
         for demo in &study.demonstrations {
             let m = common::measure(demo, &config, &tree);
             println!(

@@ -160,31 +160,11 @@ impl C45 {
             return leaf;
         };
         let nv = data.attributes[a].values.len();
-        let mut subsets: Vec<Vec<(usize, f64)>> = vec![Vec::new(); nv];
-        let mut unknown = Vec::new();
-        for &(i, w) in cases {
-            match data.cases[i].values.get(a).copied().flatten() {
-                Some(v) if v < nv => subsets[v].push((i, w)),
-                _ => unknown.push((i, w)),
-            }
-        }
-        let sizes: Vec<f64> = subsets
-            .iter()
-            .map(|s| s.iter().map(|c| c.1).sum())
-            .collect();
-        let known: f64 = sizes.iter().sum();
+        let (subsets, sizes) = split_cases(data, cases, a, nv);
         let default = sizes
             .iter()
             .enumerate()
             .fold(0, |best, (v, &s)| if s > sizes[best] { v } else { best });
-        if !unknown.is_empty() {
-            for (subset, &size) in subsets.iter_mut().zip(&sizes) {
-                let share = size / known;
-                if share > 0.0 {
-                    subset.extend(unknown.iter().map(|&(i, w)| (i, w * share)));
-                }
-            }
-        }
         used[a] = true;
         let branches = subsets
             .iter()
@@ -226,27 +206,7 @@ impl C45 {
         };
         let a = *attribute;
         let nv = branches.len();
-        let mut subsets: Vec<Vec<(usize, f64)>> = vec![Vec::new(); nv];
-        let mut unknown = Vec::new();
-        for &(i, w) in cases {
-            match data.cases[i].values.get(a).copied().flatten() {
-                Some(v) if v < nv => subsets[v].push((i, w)),
-                _ => unknown.push((i, w)),
-            }
-        }
-        let sizes: Vec<f64> = subsets
-            .iter()
-            .map(|s| s.iter().map(|c| c.1).sum())
-            .collect();
-        let known: f64 = sizes.iter().sum();
-        if known > 0.0 {
-            for (subset, &size) in subsets.iter_mut().zip(&sizes) {
-                let share = size / known;
-                if share > 0.0 {
-                    subset.extend(unknown.iter().map(|&(i, w)| (i, w * share)));
-                }
-            }
-        }
+        let (subsets, _) = split_cases(data, cases, a, nv);
         let subtree: f64 = branches
             .iter_mut()
             .zip(&subsets)
@@ -266,6 +226,40 @@ impl C45 {
             subtree
         }
     }
+}
+
+/// The weighted `cases` split by their value of attribute `a` (of `nv` values), as C4.5
+/// splits them: a case whose value is unknown goes into every subset, its weight scaled
+/// by that subset's share of the known weight (into none if no case is known). Returns
+/// the subsets and the known weight of each.
+fn split_cases(
+    data: &Dataset,
+    cases: &[(usize, f64)],
+    a: usize,
+    nv: usize,
+) -> (Vec<Vec<(usize, f64)>>, Vec<f64>) {
+    let mut subsets: Vec<Vec<(usize, f64)>> = vec![Vec::new(); nv];
+    let mut unknown = Vec::new();
+    for &(i, w) in cases {
+        match data.cases[i].values.get(a).copied().flatten() {
+            Some(v) if v < nv => subsets[v].push((i, w)),
+            _ => unknown.push((i, w)),
+        }
+    }
+    let sizes: Vec<f64> = subsets
+        .iter()
+        .map(|s| s.iter().map(|c| c.1).sum())
+        .collect();
+    let known: f64 = sizes.iter().sum();
+    if known > 0.0 {
+        for (subset, &size) in subsets.iter_mut().zip(&sizes) {
+            let share = size / known;
+            if share > 0.0 {
+                subset.extend(unknown.iter().map(|&(i, w)| (i, w * share)));
+            }
+        }
+    }
+    (subsets, sizes)
 }
 
 fn class_counts(data: &Dataset, cases: &[(usize, f64)]) -> Vec<f64> {

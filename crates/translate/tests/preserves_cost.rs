@@ -27,6 +27,19 @@ impl Rng {
     }
 }
 
+/// An atom of a random predicate `p{i}` (of arity `arities[i]`) over random `terms`.
+fn random_atom(r: &mut Rng, arities: &[u64], terms: &[String]) -> String {
+    let p = r.below(arities.len() as u64) as usize;
+    let args: Vec<String> = (0..arities[p])
+        .map(|_| terms[r.below(terms.len() as u64) as usize].clone())
+        .collect();
+    format!(
+        "(p{p}{}{})",
+        if args.is_empty() { "" } else { " " },
+        args.join(" ")
+    )
+}
+
 /// A random domain and problem as PDDL text.
 fn random_task(seed: u64) -> (String, String) {
     let mut r = Rng(seed | 1);
@@ -50,20 +63,9 @@ fn random_task(seed: u64) -> (String, String) {
         let params: Vec<String> = (0..nparams).map(|k| format!("?v{k}")).collect();
         let mut terms: Vec<String> = params.clone();
         terms.push("o0".into());
-        let lit = |r: &mut Rng, terms: &[String]| {
-            let p = r.below(arities.len() as u64) as usize;
-            let args: Vec<String> = (0..arities[p])
-                .map(|_| terms[r.below(terms.len() as u64) as usize].clone())
-                .collect();
-            format!(
-                "(p{p}{}{})",
-                if args.is_empty() { "" } else { " " },
-                args.join(" ")
-            )
-        };
         let mut pre = Vec::new();
         for _ in 0..r.below(4) {
-            let l = lit(&mut r, &terms);
+            let l = random_atom(&mut r, &arities, &terms);
             pre.push(if r.below(3) == 0 {
                 format!("(not {l})")
             } else {
@@ -79,7 +81,7 @@ fn random_task(seed: u64) -> (String, String) {
         }
         let mut eff = Vec::new();
         for _ in 0..1 + r.below(3) {
-            let l = lit(&mut r, &terms);
+            let l = random_atom(&mut r, &arities, &terms);
             eff.push(if r.below(2) == 0 {
                 format!("(not {l})")
             } else {
@@ -117,21 +119,12 @@ fn random_task(seed: u64) -> (String, String) {
     let all: Vec<String> = std::iter::once("o0".to_string())
         .chain(objects.iter().cloned())
         .collect();
-    let ground = |r: &mut Rng| {
-        let p = r.below(arities.len() as u64) as usize;
-        let args: Vec<String> = (0..arities[p])
-            .map(|_| all[r.below(all.len() as u64) as usize].clone())
-            .collect();
-        format!(
-            "(p{p}{}{})",
-            if args.is_empty() { "" } else { " " },
-            args.join(" ")
-        )
-    };
-    let init: Vec<String> = (0..r.below(5)).map(|_| ground(&mut r)).collect();
+    let init: Vec<String> = (0..r.below(5))
+        .map(|_| random_atom(&mut r, &arities, &all))
+        .collect();
     let goal: Vec<String> = (0..1 + r.below(2))
         .map(|_| {
-            let g = ground(&mut r);
+            let g = random_atom(&mut r, &arities, &all);
             if r.below(4) == 0 {
                 format!("(not {g})")
             } else {
@@ -183,16 +176,18 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
         objects.push((t.name.text.clone(), vec![ty, "object".into()]));
     }
     type State = BTreeSet<String>;
-    let atom = |a: &pddl::Atom, b: &HashMap<String, String>| -> String {
-        let args: Vec<String> = a
-            .args
+    // The objects an atom's arguments stand for under the binding `b`.
+    let bound_args = |a: &pddl::Atom, b: &HashMap<String, String>| -> Vec<String> {
+        a.args
             .iter()
             .map(|t| match t {
                 pddl::Term::Variable(v) => b[&v.text].clone(),
                 pddl::Term::Object(o) => o.text.clone(),
             })
-            .collect();
-        format!("{} {}", a.predicate.text, args.join(" "))
+            .collect()
+    };
+    let atom = |a: &pddl::Atom, b: &HashMap<String, String>| -> String {
+        format!("{} {}", a.predicate.text, bound_args(a, b).join(" "))
     };
     let mut ground: Vec<GroundAction> = Vec::new();
     for a in &domain.actions {
@@ -248,14 +243,7 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
     let holds = |s: &State, pre: &[(bool, pddl::Atom)], b: &HashMap<String, String>| {
         pre.iter().all(|(positive, a)| {
             if a.is_equality() {
-                let v: Vec<String> = a
-                    .args
-                    .iter()
-                    .map(|t| match t {
-                        pddl::Term::Variable(v) => b[&v.text].clone(),
-                        pddl::Term::Object(o) => o.text.clone(),
-                    })
-                    .collect();
+                let v = bound_args(a, b);
                 (v[0] == v[1]) == *positive
             } else {
                 s.contains(&atom(a, b)) == *positive

@@ -1,10 +1,22 @@
-//! Random valid tasks for property tests, shared by the integration tests and the
-//! crate's unit tests (`src/lib.rs` includes this file under `cfg(test)`).
+//! Tasks for tests, shared by the integration tests and the crate's unit tests
+//! (`src/lib.rs` includes this file under `cfg(test)`): random valid tasks for property
+//! tests, and `op`, an operator written briefly.
 
 #![allow(dead_code)] // each test binary uses its part
 
 use proptest::prelude::*;
 use task::{Fact, Operator, Task, VarId, Variable};
+
+/// An operator from `(variable, value)` pairs: its preconditions and its effects.
+pub fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
+    let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
+    Operator {
+        name: name.into(),
+        preconditions: facts(pre),
+        effects: facts(eff),
+        cost,
+    }
+}
 
 /// A partial assignment over variables of these domain sizes.
 fn partial(sizes: &[u32], density: f64) -> impl Strategy<Value = Vec<Fact>> {

@@ -1,5 +1,5 @@
 //! Segmentation of simulated demonstrations measured against the simulator's ground
-//! truth; shared by `tests/simulated.rs` and `examples/accuracy.rs`.
+//! truth; shared by `tests/simulated.rs` and the examples `accuracy` and `diagnose`.
 
 #![allow(dead_code)]
 
@@ -111,4 +111,34 @@ pub fn labelled_frames(
     }
     grounder.finish(&mut take);
     out
+}
+
+/// The command line of the examples that measure simulated studies: `FIRST_SEED COUNT
+/// [PARTICIPANTS PER_PARTICIPANT [GROUNDING.toml]]`, defaults 1, `default_count`, 3
+/// and 4 (the paper's study shape) and the default grounding.
+pub struct StudyArgs {
+    pub seeds: std::ops::Range<u64>,
+    pub participants: u32,
+    pub per_participant: u32,
+    pub config: GroundingConfig,
+}
+
+impl StudyArgs {
+    pub fn from_env(default_count: u64) -> Result<StudyArgs, Box<dyn std::error::Error>> {
+        let args: Vec<String> = std::env::args().collect();
+        let first: u64 = args.get(1).map_or(Ok(1), |s| s.parse())?;
+        let count: u64 = args.get(2).map_or(Ok(default_count), |s| s.parse())?;
+        let participants: u32 = args.get(3).map_or(Ok(3), |s| s.parse())?;
+        let per_participant: u32 = args.get(4).map_or(Ok(4), |s| s.parse())?;
+        let config = match args.get(5) {
+            Some(path) => GroundingConfig::from_toml(&std::fs::read_to_string(path)?)?,
+            None => GroundingConfig::default(),
+        };
+        Ok(StudyArgs {
+            seeds: first..first + count,
+            participants,
+            per_participant,
+            config,
+        })
+    }
 }

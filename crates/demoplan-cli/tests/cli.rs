@@ -2615,11 +2615,14 @@ fn study_and_reproduce_record_runs_out_of_memory() {
         assert_eq!(outcome, "memory", "{level}: {runs}");
     }
     let results = std::fs::read_to_string(study_out.join("results.jsonl")).unwrap();
-    assert_eq!(
-        results.matches(r#""outcome":"memory""#).count(),
-        6,
-        "{results}"
-    );
+    let records: Vec<serde_json::Value> = results
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(records.len(), 6, "{results}");
+    for r in &records {
+        assert_eq!(r["outcome"], "memory", "{r}");
+    }
 
     let reproduce_out = tmp.join("reproduce");
     let reproduce = demoplan()

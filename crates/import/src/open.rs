@@ -11,7 +11,12 @@
 //! let path = dir.join("demo.jsonl");
 //! std::fs::write(
 //!     &path,
-//!     "{\"format\":\"demoplan-recording\",\"version\":1,\"id\":\"demo\",\"entities\":[]}\n",
+//!     concat!(
+//!         r#"{"format":"demoplan-recording","version":1,"id":"demo","participant":"p","#,
+//!         r#""task":"t","frame_rate":90,"#,
+//!         r#""entities":[{"name":"h","kind":"hand","size":[0.1,0.1,0.1]}]}"#,
+//!         "\n"
+//!     ),
 //! )?;
 //! let kind = SourceKind::of(&path)?;
 //! assert_eq!(kind, SourceKind::Native);

@@ -7,17 +7,12 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 
-use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene};
+use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Scene};
 use slim::{solve, Backend, MemoryProbe, Outcome, RunLimits};
 
-fn fixture() -> Library {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/fixtures/widening-library.json"
-    ))
-    .unwrap();
-    Library::from_json(&text).unwrap()
-}
+mod common;
+
+use common::widening_library as fixture;
 
 fn goal_problem() -> pddl::Problem {
     let scene = Scene::cubes_on_table(4);
@@ -27,6 +22,18 @@ fn goal_problem() -> pddl::Problem {
 
 fn lmcut() -> Backend {
     Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap())
+}
+
+/// Algorithm 1 with LM-cut on the widening library and the paper's goal 1, under `limits`.
+fn solve_goal(limits: RunLimits) -> slim::Solved {
+    solve(
+        &fixture(),
+        DomainOptions::default(),
+        &goal_problem(),
+        &lmcut(),
+        limits,
+        |_| {},
+    )
 }
 
 fn nothing() {}
@@ -55,14 +62,7 @@ fn the_heap_held_before_a_run_is_not_charged_to_it() {
             peak: a_terabyte,
         }),
     };
-    let solved = solve(
-        &fixture(),
-        DomainOptions::default(),
-        &goal_problem(),
-        &lmcut(),
-        limits,
-        |_| {},
-    );
+    let solved = solve_goal(limits);
     let outcomes: Vec<&Outcome> = solved.levels.iter().map(|l| &l.run.outcome).collect();
     assert_eq!(
         outcomes,
@@ -86,14 +86,7 @@ fn every_level_that_reaches_its_memory_limit_says_so() {
             peak: growing,
         }),
     };
-    let solved = solve(
-        &fixture(),
-        DomainOptions::default(),
-        &goal_problem(),
-        &lmcut(),
-        limits,
-        |_| {},
-    );
+    let solved = solve_goal(limits);
     assert!(solved.plan_level().is_none());
     assert!(solved.any_limit());
     // Priority 1's goal is unreachable even in the relaxation: its translation may

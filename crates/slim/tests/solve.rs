@@ -5,17 +5,12 @@
 
 use std::time::Duration;
 
-use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Library, Scene};
+use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Scene};
 use slim::{solve, Backend, Outcome, RunLimits};
 
-fn fixture() -> Library {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/fixtures/widening-library.json"
-    ))
-    .unwrap();
-    Library::from_json(&text).unwrap()
-}
+mod common;
+
+use common::widening_library as fixture;
 
 #[test]
 fn widening_finds_the_plan_on_the_second_level() {

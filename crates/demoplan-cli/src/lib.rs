@@ -28,6 +28,10 @@ mod progress;
 mod recording_input;
 
 pub use exit::ExitCode;
+// For the Python extension's in-process calls: failures rendered as the command line
+// renders them, and the counting allocator's readings (the extension's Rust heap).
+pub use diagnostic::Failure;
+pub use memory::{heap_in_use, probe as memory_probe};
 
 /// Counts the heap in use for `--overall-memory-limit` and the experiments' peak memory
 /// (`memory.rs`). Declared by the library, so that whoever calls [`run`] (the executable,

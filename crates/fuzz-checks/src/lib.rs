@@ -74,6 +74,7 @@ pub fn search_a_little(task: &task::Task) {
             deadline: Some(Instant::now() + SEARCH_TIME),
             memory_limit_bytes: Some(SEARCH_BYTES),
             memory_usage: None,
+            cancel: None,
         };
         let result = match search::search(task, &config, &limits, None) {
             Ok(result) => result,
@@ -99,7 +100,7 @@ pub fn search_a_little(task: &task::Task) {
                 costs.push(Some(plan.cost));
             }
             Outcome::Unsolvable => costs.push(None),
-            Outcome::TimeLimit | Outcome::MemoryLimit => {
+            Outcome::TimeLimit | Outcome::MemoryLimit | Outcome::Cancelled => {
                 trace("search stopped at a limit");
                 return;
             }

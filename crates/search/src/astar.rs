@@ -115,6 +115,8 @@ pub enum Outcome {
     TimeLimit,
     /// The memory limit was exceeded, or the number of states outgrew 32-bit ids.
     MemoryLimit,
+    /// The caller cancelled the search (`Limits::cancel`).
+    Cancelled,
 }
 
 impl Outcome {
@@ -123,6 +125,7 @@ impl Outcome {
         match limit {
             task::Limit::Time => Outcome::TimeLimit,
             task::Limit::Memory => Outcome::MemoryLimit,
+            task::Limit::Cancelled => Outcome::Cancelled,
         }
     }
 }

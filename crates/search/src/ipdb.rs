@@ -134,6 +134,9 @@ pub enum ClimbEnd {
     MemoryLimit,
     /// `max_generated_patterns` candidates were generated.
     GeneratedPatternsLimit,
+    /// The caller cancelled the run (`Limits::cancel`); the search then stops at its
+    /// first check.
+    Cancelled,
 }
 
 impl std::fmt::Display for ClimbEnd {
@@ -145,6 +148,7 @@ impl std::fmt::Display for ClimbEnd {
             ClimbEnd::TimeLimit => "time limit",
             ClimbEnd::MemoryLimit => "memory limit",
             ClimbEnd::GeneratedPatternsLimit => "generated patterns limit",
+            ClimbEnd::Cancelled => "cancelled",
         })
     }
 }
@@ -412,6 +416,9 @@ impl<'t> Climb<'t> {
 
     /// The time or memory limit that has been reached, if any.
     fn limit_reached(&self) -> Option<ClimbEnd> {
+        if self.limits.cancelled() {
+            return Some(ClimbEnd::Cancelled);
+        }
         if self.deadline.is_some_and(|d| Instant::now() >= d) {
             return Some(ClimbEnd::TimeLimit);
         }
@@ -548,6 +555,9 @@ impl<'t> Climb<'t> {
                 }
             }
             self.samples.extend_from_slice(self.walker.state());
+            if self.limits.cancelled() {
+                return Some(ClimbEnd::Cancelled);
+            }
             if self.deadline.is_some_and(|d| Instant::now() >= d) {
                 return Some(ClimbEnd::TimeLimit);
             }

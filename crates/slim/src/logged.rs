@@ -129,6 +129,7 @@ pub fn plan_logged(
         search::Outcome::Unsolvable => Outcome::Unsolvable,
         search::Outcome::TimeLimit => Outcome::TimeLimit,
         search::Outcome::MemoryLimit => Outcome::MemoryLimit,
+        search::Outcome::Cancelled => Outcome::Cancelled,
     });
     log(outcome_line(&run.outcome));
     if let search::Outcome::Solved(plan) = &result.outcome {
@@ -161,6 +162,7 @@ fn outcome_line(outcome: &Outcome) -> &'static str {
         Outcome::TimeLimit => "Time limit reached. Abort search.",
         Outcome::MemoryLimit => "Memory limit has been reached.",
         Outcome::RelaxedUnreachable => "Search stopped without finding a solution.",
+        Outcome::Cancelled => "Search cancelled.",
         Outcome::Error(_) => "Search stopped with an error.",
     }
 }
@@ -257,6 +259,7 @@ impl LoggedRun {
                 Outcome::RelaxedUnreachable | Outcome::Unsolvable => "unsolvable",
                 Outcome::TimeLimit => "out_of_time",
                 Outcome::MemoryLimit => "out_of_memory",
+                Outcome::Cancelled => "cancelled",
                 Outcome::Error(_) => "error",
             },
             peak_memory_kb,

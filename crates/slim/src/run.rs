@@ -15,6 +15,9 @@ pub enum Outcome {
     TimeLimit,
     /// The memory limit was reached.
     MemoryLimit,
+    /// The caller cancelled the run (`task::Limits::cancel`): no result, and no limit
+    /// reached either.
+    Cancelled,
     /// The run could not be made (bad input, a planner that failed); the reason.
     Error(String),
 }
@@ -25,6 +28,7 @@ impl Outcome {
         match limit {
             task::Limit::Time => Outcome::TimeLimit,
             task::Limit::Memory => Outcome::MemoryLimit,
+            task::Limit::Cancelled => Outcome::Cancelled,
         }
     }
 
@@ -37,6 +41,7 @@ impl Outcome {
             Outcome::Unsolvable => "unsolvable",
             Outcome::TimeLimit => "limit",
             Outcome::MemoryLimit => "memory",
+            Outcome::Cancelled => "cancelled",
             Outcome::Error(_) => "error",
         }
     }
@@ -131,6 +136,7 @@ impl RunLimits {
             deadline: task::deadline_after(start, self.time),
             memory_limit_bytes: self.memory_bytes.map(|m| baseline.saturating_add(m)),
             memory_usage: in_use,
+            cancel: None,
         }
     }
 }

@@ -2,8 +2,11 @@
 //! them: translation (grounding, invariant synthesis, reachability), heuristic
 //! construction and search. Each phase checks them cooperatively, at points where it can
 //! stop cleanly, and reports a [`Limit`] as its outcome: reaching a limit is a result,
-//! not an error.
+//! not an error. A caller may also cancel a run from another thread (the Python
+//! package's Ctrl-C) through a flag that the phases check wherever they check the
+//! deadline.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// When to give up. The default has no limits.
@@ -18,6 +21,10 @@ pub struct Limits {
     /// it a phase counts the bytes of its own main structures, which leaves out
     /// everything else.
     pub memory_usage: Option<fn() -> u64>,
+    /// Stop with [`Limit::Cancelled`] once this flag is set (by another thread). A
+    /// `'static` reference keeps `Limits` `Copy`; the Python extension keeps a pool of
+    /// flags for its runs.
+    pub cancel: Option<&'static AtomicBool>,
 }
 
 /// A limit that was reached.
@@ -27,6 +34,8 @@ pub enum Limit {
     Time,
     /// Memory use exceeded the limit, or would have.
     Memory,
+    /// The caller cancelled the run ([`Limits::cancel`]).
+    Cancelled,
 }
 
 impl std::fmt::Display for Limit {
@@ -34,6 +43,7 @@ impl std::fmt::Display for Limit {
         f.write_str(match self {
             Limit::Time => "time limit",
             Limit::Memory => "memory limit",
+            Limit::Cancelled => "cancellation",
         })
     }
 }
@@ -54,11 +64,27 @@ impl Limits {
         }
     }
 
-    /// The limit reached now, if any: the deadline first, then memory (see
-    /// [`memory_in_use`](Self::memory_in_use)).
+    /// True once the caller has set the cancel flag.
+    pub fn cancelled(&self) -> bool {
+        self.cancel.is_some_and(|flag| flag.load(Ordering::Relaxed))
+    }
+
+    /// The time-like limit reached now, if any: cancellation, then the deadline. What a
+    /// phase that watches only the clock checks.
+    pub fn out_of_time(&self) -> Option<Limit> {
+        if self.cancelled() {
+            return Some(Limit::Cancelled);
+        }
+        self.deadline
+            .is_some_and(|d| Instant::now() >= d)
+            .then_some(Limit::Time)
+    }
+
+    /// The limit reached now, if any: cancellation first, then the deadline, then
+    /// memory (see [`memory_in_use`](Self::memory_in_use)).
     pub fn reached(&self, own_bytes: impl FnOnce() -> u64) -> Option<Limit> {
-        if self.deadline.is_some_and(|d| Instant::now() >= d) {
-            return Some(Limit::Time);
+        if let Some(limit) = self.out_of_time() {
+            return Some(limit);
         }
         let limit = self.memory_limit_bytes?;
         (self.memory_in_use(own_bytes) > limit).then_some(Limit::Memory)
@@ -88,9 +114,26 @@ mod tests {
         let limits = Limits {
             deadline: Some(Instant::now()),
             memory_limit_bytes: Some(0),
-            memory_usage: None,
+            ..Limits::default()
         };
         assert_eq!(limits.reached(|| 1), Some(Limit::Time));
+    }
+
+    #[test]
+    fn a_set_cancel_flag_is_reached_before_everything_else() {
+        static FLAG: AtomicBool = AtomicBool::new(false);
+        let limits = Limits {
+            deadline: Some(Instant::now()),
+            memory_limit_bytes: Some(0),
+            cancel: Some(&FLAG),
+            ..Limits::default()
+        };
+        assert_eq!(limits.reached(|| 1), Some(Limit::Time));
+        assert!(!limits.cancelled());
+        FLAG.store(true, Ordering::Relaxed);
+        assert!(limits.cancelled());
+        assert_eq!(limits.reached(|| 1), Some(Limit::Cancelled));
+        assert_eq!(limits.out_of_time(), Some(Limit::Cancelled));
     }
 
     #[test]

@@ -116,6 +116,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         deadline: task::deadline_after(start, time_limit),
         memory_limit_bytes: memory_limit,
         memory_usage: Some(memory::heap_in_use),
+        cancel: None,
     };
     let mut log = |line: &str| println!("{line}");
     let (logged, problem_path, pddl_files) = match args.files.as_slice() {
@@ -187,7 +188,8 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         slim::Outcome::TimeLimit => ExitCode::OUT_OF_TIME,
         slim::Outcome::MemoryLimit => ExitCode::OUT_OF_MEMORY,
         slim::Outcome::Unsolvable | slim::Outcome::RelaxedUnreachable => ExitCode::UNSOLVABLE,
-        slim::Outcome::Error(_) => ExitCode::CRITICAL_SEARCH_ERROR,
+        // Nothing sets the command line's cancel flag (it has none): Ctrl-C kills it.
+        slim::Outcome::Cancelled | slim::Outcome::Error(_) => ExitCode::CRITICAL_SEARCH_ERROR,
     })
 }
 

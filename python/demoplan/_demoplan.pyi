@@ -1,0 +1,53 @@
+"""Type stubs of the Rust extension module (crates/demoplan-py/src/lib.rs)."""
+
+from typing import List, Optional, Tuple
+
+__version__: str
+
+def run(argv: List[str]) -> int: ...
+def plan(
+    domain: str,
+    domain_name: str,
+    problem: str,
+    problem_name: str,
+    search: str,
+    time_limit: Optional[float] = None,
+    memory_limit: Optional[int] = None,
+) -> Tuple[str, Optional[str], Optional[int], str]: ...
+def validate(
+    domain: str,
+    domain_name: str,
+    problem: str,
+    problem_name: str,
+    plan: str,
+    plan_name: str,
+) -> Tuple[bool, str, Optional[int]]: ...
+
+class _Library:
+    def __init__(self, lambda_: int) -> None: ...
+    @staticmethod
+    def from_json(text: str, name: str) -> "_Library": ...
+    def to_json(self) -> str: ...
+    @property
+    def lambda_(self) -> int: ...
+    @property
+    def segments(self) -> int: ...
+    @property
+    def recordings(self) -> List[str]: ...
+    def operators(
+        self,
+    ) -> List[Tuple[str, str, int, int, List[Tuple[str, str, str, str, float, float]]]]: ...
+    def cards(self) -> str: ...
+    def levels(self, keep_without_effects: bool) -> List[Tuple[int, List[str]]]: ...
+    def domain(self, prio: int, keep_without_effects: bool) -> str: ...
+
+def solve(
+    library: _Library,
+    problem: str,
+    problem_name: str,
+    search: str,
+    keep_without_effects: bool = False,
+    time_limit: Optional[float] = None,
+    memory_limit: Optional[int] = None,
+) -> Tuple[List[Tuple[int, int, str, Optional[str], Optional[int], Optional[int], float]], float]: ...
+def read_poses(path: str) -> Tuple[List[str], List[float], List[float]]: ...

@@ -1,0 +1,305 @@
+"""The learning side: operator libraries learned from demonstrations, their domains by
+priority, Algorithm 1, simulated demonstrations, and recordings as arrays.
+
+Learning and simulating run the command line's own ``learn`` and ``simulate`` inside
+the extension (their output captured, never printed), so that a library learned here is
+the file ``demoplan learn`` writes; everything else calls the library crates directly.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import pathlib
+import tempfile
+from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Sequence, Tuple
+
+from demoplan import _demoplan
+from demoplan.errors import DemoplanError, error_for_exit_code
+from demoplan.planning import Source, _read
+
+if TYPE_CHECKING:
+    import numpy
+
+
+def _run_quietly(argv: Sequence[str]) -> Tuple[int, str]:
+    """Runs the command line on ``argv`` with its standard output and error captured
+    (file descriptors 1 and 2 point at a temporary file meanwhile); returns the exit
+    code and what it wrote."""
+    import sys
+
+    sys.stdout.flush()
+    sys.stderr.flush()
+    with tempfile.TemporaryFile(mode="w+b") as capture:
+        saved = [os.dup(1), os.dup(2)]
+        try:
+            os.dup2(capture.fileno(), 1)
+            os.dup2(capture.fileno(), 2)
+            code = _demoplan.run(["demoplan", *argv])
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+        capture.seek(0)
+        return code, capture.read().decode("utf-8", errors="replace")
+
+
+def _checked(argv: Sequence[str]) -> str:
+    code, text = _run_quietly(argv)
+    if code != 0:
+        raise error_for_exit_code(code, text.strip() or f"demoplan {argv[0]} failed with exit code {code}")
+    return text
+
+
+@dataclasses.dataclass(frozen=True)
+class Provenance:
+    """One demonstrated segment behind an operator."""
+
+    recording: str
+    hash: str
+    participant: str
+    hand: str
+    start: float
+    end: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Operator:
+    """A learned operator: its name by rank (``put``, ``put2``, ...), its activity, how
+    many segments showed it, its cost ``ceil(lambda * (1 - count / type_count))``, and
+    the segments behind it."""
+
+    name: str
+    activity: str
+    count: int
+    cost: int
+    provenance: List[Provenance]
+
+
+@dataclasses.dataclass(frozen=True)
+class Level:
+    """One level of Algorithm 1: a priority and the operators of its domain."""
+
+    prio: int
+    operators: List[str]
+
+
+class Library:
+    """An operator library: create one (``Library()``), load one (:meth:`load`), learn
+    from recordings (:meth:`learn`), list its operators, write domains by priority."""
+
+    def __init__(self, lambda_: int = 100) -> None:
+        self._inner = _demoplan._Library(lambda_)
+
+    @classmethod
+    def load(cls, path: "os.PathLike[str] | str") -> "Library":
+        """The library file at ``path``; a damaged or newer one raises InputError naming
+        its line."""
+        file = pathlib.Path(path)
+        try:
+            text = file.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as e:
+            raise error_for_exit_code(36, f"error: cannot read library {file}: {e}") from None
+        return cls.from_json(text, str(file))
+
+    @classmethod
+    def from_json(cls, text: str, name: str = "<library>") -> "Library":
+        """The library of a library file's text."""
+        library = cls.__new__(cls)
+        library._inner = _demoplan._Library.from_json(text, name)
+        return library
+
+    def to_json(self) -> str:
+        """The library file's text (deterministic)."""
+        return self._inner.to_json()
+
+    def save(self, path: "os.PathLike[str] | str") -> None:
+        """Writes the library file to ``path``, replacing it whole (never half-written)."""
+        target = pathlib.Path(path)
+        with tempfile.NamedTemporaryFile("w", dir=target.parent, prefix=f".{target.name}.", delete=False, encoding="utf-8") as out:
+            out.write(self.to_json())
+        os.replace(out.name, target)
+
+    def learn(
+        self,
+        recordings: Iterable["os.PathLike[str] | str"],
+        mapping: Optional["os.PathLike[str] | str"] = None,
+    ) -> str:
+        """Adds the recordings' activities to the library (those it has already counted
+        are skipped, by content hash), as ``demoplan learn`` does; returns its log."""
+        files = [os.fspath(r) for r in recordings]
+        if not files:
+            raise DemoplanError("learn: no recordings given", 36)
+        with tempfile.TemporaryDirectory() as folder:
+            before = os.path.join(folder, "before.json")
+            after = os.path.join(folder, "after.json")
+            argv = ["learn", *files, "-o", after, "--lambda", str(self.lambda_)]
+            if self._inner.segments > 0 or self._inner.recordings:
+                with open(before, "w", encoding="utf-8") as out:
+                    out.write(self.to_json())
+                argv += ["--library", before]
+            if mapping is not None:
+                argv += ["--mapping", os.fspath(mapping)]
+            log = _checked(argv)
+            with open(after, encoding="utf-8") as learned:
+                self._inner = _demoplan._Library.from_json(learned.read(), after)
+        return log
+
+    @property
+    def lambda_(self) -> int:
+        """The largest action cost (the paper's lambda)."""
+        return self._inner.lambda_
+
+    @property
+    def segments(self) -> int:
+        """How many segments the library has counted."""
+        return self._inner.segments
+
+    @property
+    def recordings(self) -> List[str]:
+        """The ids of the recordings learned from."""
+        return self._inner.recordings
+
+    def operators(self) -> List[Operator]:
+        """Every operator, ranked as ``demoplan operators`` lists them."""
+        return [
+            Operator(name, activity, count, cost, [Provenance(*p) for p in provenance])
+            for name, activity, count, cost, provenance in self._inner.operators()
+        ]
+
+    def cards(self) -> str:
+        """``demoplan operators``' text: one card per operator."""
+        return self._inner.cards()
+
+    def levels(self, keep_without_effects: bool = False) -> List[Level]:
+        """The distinct levels of Algorithm 1, priority 1 up to the full domain."""
+        return [Level(prio, names) for prio, names in self._inner.levels(keep_without_effects)]
+
+    def domain(self, prio: int, keep_without_effects: bool = False) -> str:
+        """The PDDL domain of the most frequent ``prio`` operators of each type, as
+        ``demoplan domain --prio`` writes it."""
+        return self._inner.domain(prio, keep_without_effects)
+
+
+@dataclasses.dataclass(frozen=True)
+class LevelResult:
+    """One level tried by :func:`solve`: its priority, its number of operators, how its
+    run ended (``solved``, ``unsolvable``, ``relaxed-unreachable``, ``limit``,
+    ``memory``), the plan and its cost when solved, expansions and seconds."""
+
+    prio: int
+    operators: int
+    outcome: str
+    plan: Optional[str]
+    cost: Optional[int]
+    expansions: Optional[int]
+    seconds: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Solved:
+    """The result of Algorithm 1: every level tried, the cumulative time over all of
+    them (failed ones included), and the level that gave the plan, if any."""
+
+    levels: List[LevelResult]
+    cumulative_seconds: float
+
+    @property
+    def plan_level(self) -> Optional[LevelResult]:
+        return next((level for level in self.levels if level.outcome == "solved"), None)
+
+
+def solve(
+    library: Library,
+    problem: Source,
+    search: str = "astar(lmcut())",
+    time_limit: Optional[float] = None,
+    memory_limit: Optional[int] = None,
+    keep_without_effects: bool = False,
+) -> Solved:
+    """The paper's Algorithm 1 (``demoplan solve``): plans ``problem`` (PDDL text or a
+    path) on the library's levels, priority 1 upwards, until one gives a plan. The
+    limits are per level. The GIL is released."""
+    text, name = _read(problem, "problem")
+    rows, cumulative = _demoplan.solve(
+        library._inner, text, name, search, keep_without_effects, time_limit, memory_limit
+    )
+    return Solved([LevelResult(*row) for row in rows], cumulative)
+
+
+def simulate(
+    out: "os.PathLike[str] | str",
+    participants: int = 3,
+    per_participant: int = 4,
+    seed: int = 7,
+    cubes: Optional[int] = None,
+) -> List[pathlib.Path]:
+    """Simulated demonstrations of people stacking cubes (``demoplan simulate``): writes
+    the recordings, their ground truth and ``simulation.json`` to ``out``; returns the
+    recordings' paths."""
+    folder = pathlib.Path(out)
+    argv = [
+        "simulate",
+        "-o",
+        str(folder),
+        "--participants",
+        str(participants),
+        "--per-participant",
+        str(per_participant),
+        "--seed",
+        str(seed),
+    ]
+    if cubes is not None:
+        argv += ["--cubes", str(cubes)]
+    _checked(argv)
+    manifest: Any = json.loads((folder / "simulation.json").read_text(encoding="utf-8"))
+    return [folder / entry["recording"] for entry in manifest["recordings"]]
+
+
+class Recording:
+    """A recording in demoplan's format, read whole: its entities, frame times and the
+    pose of every entity in every frame."""
+
+    def __init__(self, path: "os.PathLike[str] | str") -> None:
+        self.path = pathlib.Path(path)
+        self.entities, self.times, self._poses = _demoplan.read_poses(str(self.path))
+
+    def to_numpy(self) -> "numpy.ndarray[Any, Any]":
+        """The poses as an array of frames x entities x 7 (x, y, z in metres, then the
+        quaternion qx, qy, qz, qw), float32, NaN where an entity was not observed. A fixed
+        entity (the table) has its fixed pose in every frame. Needs numpy."""
+        try:
+            import numpy
+        except ImportError:
+            raise ImportError(
+                "Recording.to_numpy needs numpy, which is not installed: pip install numpy"
+            ) from None
+        array = numpy.array(self._poses, dtype=numpy.float32)
+        return array.reshape(len(self.times), len(self.entities), 7)
+
+
+def tower_problem(
+    tower: Optional[Sequence[str]] = None,
+    paper_goal: Optional[int] = None,
+    cubes: Optional[int] = None,
+    hands: Optional[int] = None,
+) -> str:
+    """A tower problem for learned domains (``demoplan problem``) as PDDL text: the cubes
+    of ``tower`` stacked bottom first (e.g. ``["cube_1", "cube_2", "cube_3"]``), or the paper's goal
+    ``paper_goal`` (1-5), on a table of ``cubes`` cubes with ``hands`` hands."""
+    with tempfile.TemporaryDirectory() as folder:
+        out = os.path.join(folder, "problem.pddl")
+        argv = ["problem", "-o", out]
+        if tower is not None:
+            argv += ["--tower", ",".join(tower)]
+        if paper_goal is not None:
+            argv += ["--paper-goal", str(paper_goal)]
+        if cubes is not None:
+            argv += ["--cubes", str(cubes)]
+        if hands is not None:
+            argv += ["--hands", str(hands)]
+        _checked(argv)
+        with open(out, encoding="utf-8") as text:
+            return text.read()

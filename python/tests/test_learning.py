@@ -1,0 +1,141 @@
+"""The learning side through Python: simulate, learn, levels, domains, Algorithm 1, and
+recordings as arrays."""
+
+from __future__ import annotations
+
+import builtins
+import math
+import pathlib
+import subprocess
+from typing import Any, List
+
+import pytest
+
+import demoplan
+
+
+@pytest.fixture(scope="module")
+def recordings(tmp_path_factory: pytest.TempPathFactory) -> List[pathlib.Path]:
+    out = tmp_path_factory.mktemp("simulated")
+    return demoplan.simulate(out, participants=2, per_participant=2, seed=7)
+
+
+def test_simulate_writes_the_recordings_it_returns(recordings: List[pathlib.Path]) -> None:
+    assert len(recordings) == 4
+    for path in recordings:
+        assert path.is_file() and path.suffix == ".jsonl"
+        assert (path.parent / "simulation.json").is_file()
+
+
+def test_learned_library_equals_what_demoplan_learn_writes(
+    recordings: List[pathlib.Path], tmp_path: pathlib.Path, demoplan_binary: pathlib.Path
+) -> None:
+    library = demoplan.Library()
+    log = library.learn(recordings)
+    assert "wrote" in log
+    written = tmp_path / "library.json"
+    subprocess.run(
+        [str(demoplan_binary), "learn", *map(str, recordings), "-o", str(written)],
+        check=True,
+        capture_output=True,
+    )
+    assert library.to_json() == written.read_text()
+    # Loading the file gives the same library, and saving it writes the same file.
+    loaded = demoplan.Library.load(written)
+    assert loaded.to_json() == library.to_json()
+    loaded.save(tmp_path / "again.json")
+    assert (tmp_path / "again.json").read_text() == written.read_text()
+
+
+def test_learning_twice_counts_each_recording_once(recordings: List[pathlib.Path]) -> None:
+    library = demoplan.Library()
+    library.learn(recordings[:2])
+    library.learn(recordings)
+    once = demoplan.Library()
+    once.learn(recordings)
+    assert library.to_json() == once.to_json()
+
+
+def test_operators_have_counts_costs_and_provenance(recordings: List[pathlib.Path]) -> None:
+    library = demoplan.Library()
+    library.learn(recordings)
+    operators = library.operators()
+    assert operators
+    assert sum(o.count for o in operators) == library.segments
+    ids = set(library.recordings)
+    assert len(ids) == 4
+    for op in operators:
+        assert op.name.startswith(op.activity)
+        assert 0 <= op.cost <= library.lambda_
+        assert len(op.provenance) == op.count
+        assert all(p.recording in ids and p.start <= p.end for p in op.provenance)
+    # The most frequent operator of each type is the cheapest of its type.
+    by_type: dict[str, List[demoplan.Operator]] = {}
+    for op in operators:
+        by_type.setdefault(op.activity, []).append(op)
+    for ops in by_type.values():
+        first = next(o for o in ops if o.name == o.activity)
+        assert first.cost == min(o.cost for o in ops)
+    assert operators[0].name in library.cards()
+
+
+def test_levels_domains_and_algorithm_1(recordings: List[pathlib.Path]) -> None:
+    library = demoplan.Library()
+    library.learn(recordings)
+    levels = library.levels()
+    assert [level.prio for level in levels] == sorted(level.prio for level in levels)
+    assert len(levels[-1].operators) >= len(levels[0].operators)
+    domain = library.domain(levels[-1].prio)
+    assert domain.lstrip().startswith(";") or "(define (domain" in domain
+    problem = demoplan.tower_problem(["cube_1", "cube_2"])
+    full = demoplan.plan(domain, problem)
+    solved = demoplan.solve(library, problem)
+    assert [r.prio for r in solved.levels] == [level.prio for level in levels][: len(solved.levels)]
+    level = solved.plan_level
+    assert level is not None and level.plan is not None and level.cost is not None
+    # A slim level's plan costs at least the full domain's optimum.
+    assert level.cost >= full.cost
+    assert demoplan.validate(domain, problem, level.plan).valid
+
+
+def test_damaged_library_names_its_line(tmp_path: pathlib.Path) -> None:
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"format": "demoplan-library",\n "version": 999}\n')
+    with pytest.raises(demoplan.InputError, match="bad.json"):
+        demoplan.Library.load(bad)
+
+
+def test_recording_to_numpy(recordings: List[pathlib.Path]) -> None:
+    import numpy
+    recording = demoplan.Recording(recordings[0])
+    array = recording.to_numpy()
+    assert array.shape == (len(recording.times), len(recording.entities), 7)
+    assert array.dtype == numpy.float32
+    # Observed poses have unit quaternions; missing ones are NaN in all 7 numbers.
+    for frame in array[:50]:
+        for pose in frame:
+            if math.isnan(float(pose[0])):
+                assert numpy.isnan(pose).all()
+            else:
+                assert abs(float(numpy.linalg.norm(pose[3:])) - 1.0) < 1e-3
+
+
+def test_to_numpy_says_it_needs_numpy(recordings: List[pathlib.Path], monkeypatch: pytest.MonkeyPatch) -> None:
+    recording = demoplan.Recording(recordings[0])
+    real_import = builtins.__import__
+
+    def no_numpy(name: str, *args: Any, **kwargs: Any) -> Any:
+        if name == "numpy" or name.startswith("numpy."):
+            raise ImportError("No module named 'numpy'")
+        return real_import(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", no_numpy)
+    with pytest.raises(ImportError, match="needs numpy"):
+        recording.to_numpy()
+
+
+def test_bad_recording_is_an_input_error(tmp_path: pathlib.Path) -> None:
+    bad = tmp_path / "bad.jsonl"
+    bad.write_text('{"format": "nonsense"}\n')
+    with pytest.raises(demoplan.InputError, match="bad.jsonl"):
+        demoplan.Recording(bad)

@@ -163,7 +163,7 @@ impl HeuristicConfig {
                     Ok(built) => built,
                     Err(limit) => return Ok(Built::Stopped(limit)),
                 };
-                let mut h = CanonicalPdbs::within(task, pdbs, pruning, "cpdbs", limits.deadline);
+                let mut h = CanonicalPdbs::within(task, pdbs, pruning, "cpdbs", limits.clock());
                 let statistics = h.statistics_mut();
                 statistics.hill_climbing = climb;
                 statistics.total_time = start.elapsed();

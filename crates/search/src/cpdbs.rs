@@ -13,7 +13,7 @@
 
 use std::time::{Duration, Instant};
 
-use task::{Task, VarId};
+use task::{Deadline, Task, VarId};
 
 use crate::heuristic::Heuristic;
 use crate::pdb::PatternDatabase;
@@ -71,7 +71,7 @@ impl Additivity {
 pub(crate) fn maximal_cliques(
     n: usize,
     adjacent: &[Vec<u64>],
-    deadline: Option<Instant>,
+    deadline: Deadline,
 ) -> Vec<Vec<u32>> {
     let words = n.div_ceil(64);
     let mut candidates = vec![0u64; words];
@@ -92,17 +92,17 @@ pub(crate) fn maximal_cliques(
     out
 }
 
-/// The deadline of a clique enumeration, read every 256 calls (a call is cheap; reading
-/// the clock on each would be a large part of it).
+/// The deadline (and cancel flag) of a clique enumeration, read every 256 calls (a call
+/// is cheap; reading the clock on each would be a large part of it).
 struct Clock {
-    deadline: Option<Instant>,
+    deadline: Deadline,
     calls: u32,
 }
 
 impl Clock {
     fn passed(&mut self) -> bool {
         self.calls = self.calls.wrapping_add(1);
-        self.calls.is_multiple_of(256) && self.deadline.is_some_and(|d| Instant::now() >= d)
+        self.calls.is_multiple_of(256) && self.deadline.passed()
     }
 }
 
@@ -180,7 +180,7 @@ fn expand(
 pub(crate) fn additive_cliques(
     additivity: &Additivity,
     patterns: &[&[VarId]],
-    deadline: Option<Instant>,
+    deadline: Deadline,
 ) -> Vec<Vec<u32>> {
     let n = patterns.len();
     let words = n.div_ceil(64);
@@ -360,7 +360,7 @@ impl CanonicalPdbs {
         dominance_pruning: Option<Duration>,
         name: &'static str,
     ) -> CanonicalPdbs {
-        CanonicalPdbs::within(task, pdbs, dominance_pruning, name, None)
+        CanonicalPdbs::within(task, pdbs, dominance_pruning, name, Deadline::default())
     }
 
     /// Like [`new`](Self::new), but the clique enumeration and the pruning stop at
@@ -372,7 +372,7 @@ impl CanonicalPdbs {
         mut pdbs: Vec<PatternDatabase>,
         dominance_pruning: Option<Duration>,
         name: &'static str,
-        deadline: Option<Instant>,
+        deadline: Deadline,
     ) -> CanonicalPdbs {
         let start = Instant::now();
         let mut seen = rustc_hash::FxHashSet::default();
@@ -383,10 +383,7 @@ impl CanonicalPdbs {
         let mut statistics = PdbStatistics::default();
         if let Some(limit) = dominance_pruning {
             let before = cliques.len();
-            let until = match (start.checked_add(limit), deadline) {
-                (Some(a), Some(b)) => Some(a.min(b)),
-                (a, b) => a.or(b),
-            };
+            let until = deadline.or_earlier(start.checked_add(limit));
             cliques = prune_dominated(&patterns, cliques, until);
             statistics.pruned_cliques = before - cliques.len();
             statistics.dominance_pruning_time = start.elapsed();
@@ -506,7 +503,7 @@ impl Heuristic for CanonicalPdbs {
 fn prune_dominated(
     patterns: &[&[VarId]],
     cliques: Vec<Vec<u32>>,
-    deadline: Option<Instant>,
+    deadline: Deadline,
 ) -> Vec<Vec<u32>> {
     let n = patterns.len();
     let words = n.div_ceil(64).max(1);
@@ -563,7 +560,7 @@ fn prune_dominated(
         if pruned[b] {
             continue;
         }
-        if b % 256 == 0 && deadline.is_some_and(|d| Instant::now() >= d) {
+        if b % 256 == 0 && deadline.passed() {
             break;
         }
         closure.fill(0);
@@ -645,18 +642,21 @@ mod tests {
                 }
             }
             let adjacent = graph(n, &edges);
-            let mut got = maximal_cliques(n, &adjacent, None);
+            let mut got = maximal_cliques(n, &adjacent, Deadline::default());
             got.sort();
             assert_eq!(got, brute_force(n, &adjacent), "{n} {edges:?}");
         }
         // No vertices: one empty clique (the heuristic is then 0).
-        assert_eq!(maximal_cliques(0, &[], None), vec![Vec::<u32>::new()]);
+        assert_eq!(
+            maximal_cliques(0, &[], Deadline::default()),
+            vec![Vec::<u32>::new()]
+        );
         // A 70-vertex complete graph crosses a word boundary.
         let edges: Vec<_> = (0..70)
             .flat_map(|a| (a + 1..70).map(move |b| (a, b)))
             .collect();
         assert_eq!(
-            maximal_cliques(70, &graph(70, &edges), None),
+            maximal_cliques(70, &graph(70, &edges), Deadline::default()),
             vec![(0..70).collect::<Vec<u32>>()]
         );
     }
@@ -670,9 +670,9 @@ mod tests {
             .filter(|&(a, b)| !(a % 2 == 0 && b == a + 1))
             .collect();
         let adjacent = graph(n, &edges);
-        let all = maximal_cliques(n, &adjacent, None);
+        let all = maximal_cliques(n, &adjacent, Deadline::default());
         assert_eq!(all.len(), 1 << 12);
-        let cut = maximal_cliques(n, &adjacent, Some(Instant::now()));
+        let cut = maximal_cliques(n, &adjacent, Deadline::at(Some(Instant::now())));
         assert!(cut.len() < all.len(), "stopped early: {}", cut.len());
         assert!(cut.iter().all(|c| all.contains(c)), "only maximal cliques");
     }
@@ -753,7 +753,7 @@ mod tests {
         let refs: Vec<&[VarId]> = patterns.iter().map(|p| p.as_slice()).collect();
         // {0}, {1} additive with each other and {2}; {0, 1} additive with {2}.
         let cliques = vec![vec![0, 1, 3], vec![2, 3]];
-        let far = Some(Instant::now() + Duration::from_secs(60));
+        let far = Deadline::at(Some(Instant::now() + Duration::from_secs(60)));
         assert_eq!(
             prune_dominated(&refs, cliques.clone(), far),
             vec![vec![2, 3]]

@@ -203,7 +203,7 @@ pub fn ipdb(
         Some(t) => Some(t),
         None => Some(Duration::MAX),
     };
-    let mut heuristic = CanonicalPdbs::within(task, collection, pruning, "ipdb", limits.deadline);
+    let mut heuristic = CanonicalPdbs::within(task, collection, pruning, "ipdb", limits.clock());
     let statistics = heuristic.statistics_mut();
     statistics.hill_climbing = Some(climb);
     statistics.total_time = start.elapsed();
@@ -411,7 +411,14 @@ impl<'t> Climb<'t> {
         self.collection_size += pdb.size() as u64;
         self.collection.push(pdb);
         let patterns: Vec<&[VarId]> = self.collection.iter().map(|p| p.pattern()).collect();
-        self.cliques = additive_cliques(&self.additivity, &patterns, self.deadline);
+        self.cliques = additive_cliques(
+            &self.additivity,
+            &patterns,
+            task::Deadline {
+                at: self.deadline,
+                cancel: self.limits.cancel,
+            },
+        );
     }
 
     /// The time or memory limit that has been reached, if any.

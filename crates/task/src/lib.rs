@@ -29,7 +29,7 @@
 pub mod limits;
 pub mod sas_file;
 
-pub use limits::{deadline_after, Limit, Limits};
+pub use limits::{deadline_after, Deadline, Limit, Limits};
 
 use std::fmt;
 

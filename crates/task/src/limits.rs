@@ -27,6 +27,38 @@ pub struct Limits {
     pub cancel: Option<&'static AtomicBool>,
 }
 
+/// The deadline with the cancel flag: the stop of a phase that watches only the clock
+/// (clique enumeration and pruning, which keep what they found when it comes).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Deadline {
+    /// The instant to stop at; `None` is no deadline.
+    pub at: Option<Instant>,
+    /// The run's cancel flag ([`Limits::cancel`]).
+    pub cancel: Option<&'static AtomicBool>,
+}
+
+impl Deadline {
+    /// A deadline alone, with no cancel flag.
+    pub fn at(at: Option<Instant>) -> Deadline {
+        Deadline { at, cancel: None }
+    }
+
+    /// True once the flag is set or the instant has passed.
+    pub fn passed(&self) -> bool {
+        self.cancel.is_some_and(|flag| flag.load(Ordering::Relaxed))
+            || self.at.is_some_and(|d| Instant::now() >= d)
+    }
+
+    /// The same stop, with the instant `other` where that comes first.
+    pub fn or_earlier(self, other: Option<Instant>) -> Deadline {
+        let at = match (self.at, other) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
+        Deadline { at, ..self }
+    }
+}
+
 /// A limit that was reached.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Limit {
@@ -61,6 +93,14 @@ impl Limits {
         match self.memory_usage {
             Some(read) => read(),
             None => own_bytes(),
+        }
+    }
+
+    /// The deadline and the cancel flag, for phases that watch only the clock.
+    pub fn clock(&self) -> Deadline {
+        Deadline {
+            at: self.deadline,
+            cancel: self.cancel,
         }
     }
 
@@ -134,6 +174,18 @@ mod tests {
         assert!(limits.cancelled());
         assert_eq!(limits.reached(|| 1), Some(Limit::Cancelled));
         assert_eq!(limits.out_of_time(), Some(Limit::Cancelled));
+        // A clock-only phase sees the flag too.
+        let later = Some(Instant::now() + Duration::from_secs(3600));
+        let clock = Limits {
+            deadline: later,
+            ..limits
+        }
+        .clock();
+        assert!(clock.passed());
+        assert!(!Deadline::at(later).passed());
+        assert!(Deadline::at(later)
+            .or_earlier(Some(Instant::now()))
+            .passed());
     }
 
     #[test]

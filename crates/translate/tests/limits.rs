@@ -71,6 +71,7 @@ fn limits_that_are_not_reached_change_nothing() {
         deadline: Some(Instant::now() + Duration::from_secs(3600)),
         memory_limit_bytes: Some(u64::MAX),
         memory_usage: None,
+        cancel: None,
     };
     let Translation::Task(within) =
         translate::translate_within(&domain, &problem, &limits).unwrap()

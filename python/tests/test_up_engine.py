@@ -105,6 +105,19 @@ def test_timeout_gives_the_timeout_status() -> None:
     assert result.plan is None
 
 
+
+def test_memory_limit_gives_the_memout_status() -> None:
+    # The same blind search under a 64 MB memory limit and a long timeout: its state
+    # registry outgrows the limit long before the minute is up, and the child process
+    # stops itself (exit 22), which UP sees as MEMOUT.
+    order = [f"b{i}" for i in range(13)]
+    problem = blocks([order], [list(reversed(order))])
+    params = {"search": "astar(blind())", "memory_limit": "64M"}
+    with OneshotPlanner(name="demoplan", params=params) as planner:
+        result = planner.solve(problem, timeout=60.0)
+    assert result.status == Status.MEMOUT
+    assert result.plan is None
+
 def conditional_problem() -> Problem:
     thing = UserType("thing")
     lit = Fluent("lit", BoolType(), t=thing)

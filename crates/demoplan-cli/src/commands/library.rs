@@ -2,9 +2,10 @@
 
 use std::path::Path;
 
-pub use learn::{cards_markdown, cards_text, domain_text, summary_table};
+pub use learn::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
 use learn::{
-    levels, operator_subset, per_type, Batch, DomainOptions, Library, Scene, Tower, TowerError,
+    levels, operator_subset, Batch, DomainOptions, Library, LockError, Scene, Tower, TowerError,
+    WriteLock,
 };
 
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
@@ -12,7 +13,7 @@ use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
 use crate::input;
-use crate::output::{remove_stale_temporaries, write_atomically, write_durably, WriteLock};
+use crate::output::{remove_stale_temporaries, write_atomically, write_durably};
 
 /// Reads a library file: a missing file is a command line error (36), a damaged or newer
 /// one an input error (31) that names the line.
@@ -72,13 +73,28 @@ fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), 
     Ok(())
 }
 
+/// A library whose lock was not taken: still held after `--lock-timeout` is
+/// [`ExitCode::LOCKED`], a lock file that cannot be opened or locked an I/O error.
+fn lock_failure(e: LockError) -> Failure {
+    match e {
+        LockError::Held { .. } => Failure::plain(
+            ExitCode::LOCKED,
+            format!(
+                "{e}; try again later or with a longer --lock-timeout (a lock is held by a \
+                 running process only, and released when it ends)"
+            ),
+        ),
+        e => Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string()),
+    }
+}
+
 /// Learning in two phases, so that concurrent learners of one library lose no counts and
 /// wait for each other only briefly: first the slow part, grounding and segmenting the
 /// recordings, without a lock; then, holding the output's [`WriteLock`], reading the
 /// library again, adding the recordings and writing it (durably, by a rename), so that
 /// the read and the write see no other writer in between (`docs/reliability.md`).
 pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
-    let lock_timeout = crate::commands::plan::parse_time_limit(&args.lock_timeout)
+    let lock_timeout = task::units::parse_time_limit(&args.lock_timeout)
         .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))?;
     // A first look at the library: its lambda, and the recordings it already counts
     // (not segmented again). It is read again under the lock.
@@ -90,19 +106,18 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         }
         None => None,
     };
-    let config = demo_input::config(args.config.as_deref())?;
-    let tree = demo_input::activity_tree(args.tree.as_deref())?;
     // ARFF hand-state tables are segmented as they are (no geometry to ground); their
     // states hold the hand's own facts only (docs/operators.md).
-    let segment =
-        |path: &Path| demo_input::segment_file(path, args.mapping.as_deref(), &config, &tree);
+    let segmentation = demo_input::segmentation(&args.segmentation)?;
+    let segment = |path: &Path| demo_input::segment_file(path, &segmentation);
     let files = demo_input::recordings(&args.files)?;
     let batch = Batch::prepare(&files, before.as_ref(), file_hash, segment)?;
     drop(before);
 
     // The lock and the write go to the library's canonical path: through a symlink or
     // a relative name, one library is one file with one lock.
-    let lock = WriteLock::acquire(&args.out, lock_timeout)?;
+    let lock =
+        WriteLock::acquire(&args.out, lock_timeout, |w| eprintln!("{w}")).map_err(lock_failure)?;
     remove_stale_temporaries(lock.target());
     let mut library = match &args.library {
         Some(path) => {
@@ -151,14 +166,7 @@ pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
     let all = levels(&library, options);
     let Some(out) = args.out else {
         // No output file: list the levels.
-        println!(
-            "{:>5} {:>9}  per type (reach, take, put, stack, idle)",
-            "prio", "operators"
-        );
-        for l in &all {
-            let counts = per_type(&l.operators);
-            println!("{:>5} {:>9}  {:?}", l.prio, l.operators.len(), counts);
-        }
+        print!("{}", levels_table(&all));
         return Ok(ExitCode::SUCCESS);
     };
     let (operators, what) = if args.full {

@@ -34,12 +34,6 @@ pub fn write_atomically(path: &Path, text: &str) -> Result<(), Failure> {
     atomic_write::write_atomically(path, text).map_err(write_failure)
 }
 
-/// Like [`write_atomically`], and durable ([`atomic_write::write_durably`]): after a power
-/// loss the path holds the old or the new content too.
-pub fn write_durably(path: &Path, text: &str) -> Result<(), Failure> {
-    atomic_write::write_durably(path, text).map_err(write_failure)
-}
-
 /// Like [`write_atomically`], for output produced piece by piece
 /// ([`atomic_write::write_atomically_with`]).
 pub fn write_atomically_with(
@@ -53,5 +47,3 @@ pub fn write_atomically_with(
 fn write_failure(e: atomic_write::WriteError) -> Failure {
     Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string())
 }
-
-pub use atomic_write::remove_stale_temporaries;

@@ -35,6 +35,7 @@ mod lock;
 mod operator;
 mod pipeline;
 mod timeline;
+mod update;
 
 pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
 pub use domain::{
@@ -59,3 +60,4 @@ pub use pipeline::{
     HandsGrounded, Observer, Segmented, StateAt,
 };
 pub use timeline::{activity_color, timeline, Signals};
+pub use update::{LibraryFileError, Update, UpdateError, Updated};

@@ -48,27 +48,21 @@ impl From<UpdateError> for Failure {
                 path,
                 asked,
                 library,
-            } => Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "--lambda {asked} differs from the library's lambda {library} ({}); costs \
-                     of one library use one lambda",
-                    path.display()
-                ),
+            } => differs(
+                format!("--lambda {asked}"),
+                format!("lambda {library}"),
+                &path,
+                "costs of one library use one lambda",
             ),
             UpdateError::Grouping {
                 path,
                 asked,
                 library,
-            } => Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "--activities {} differs from the library's `{}` activities ({}); one \
-                     library counts activities of one kind",
-                    asked.name(),
-                    library.name(),
-                    path.display()
-                ),
+            } => differs(
+                format!("--activities {}", asked.name()),
+                format!("`{}` activities", library.name()),
+                &path,
+                "one library counts activities of one kind",
             ),
             UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
                 ExitCode::LOCKED,
@@ -82,6 +76,17 @@ impl From<UpdateError> for Failure {
             }
         }
     }
+}
+
+/// An option that differs from the library's setting: a command line error (36).
+fn differs(asked: String, library: String, path: &Path, why: &str) -> Failure {
+    Failure::plain(
+        ExitCode::USAGE,
+        format!(
+            "{asked} differs from the library's {library} ({}); {why}",
+            path.display()
+        ),
+    )
 }
 
 /// Learning in two phases around the library's lock ([`learn::Update`]), so that

@@ -61,6 +61,14 @@ pub fn exits(code: i32, cmd: &mut Command) -> Output {
     out
 }
 
+/// Runs `cmd` to its end; it must exit `code` and say `needle` on standard error.
+#[track_caller]
+pub fn exits_saying(code: i32, needle: &str, cmd: &mut Command) -> Output {
+    let out = exits(code, cmd);
+    assert!(stderr_text(&out).contains(needle), "{}", transcript(&out));
+    out
+}
+
 /// What a run printed on standard output, as text.
 pub fn stdout_text(out: &Output) -> String {
     String::from_utf8_lossy(&out.stdout).into_owned()

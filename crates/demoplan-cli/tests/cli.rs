@@ -362,17 +362,24 @@ fn planning_is_deterministic() {
     assert_eq!(seen[0], seen[1]);
 }
 
-#[test]
-fn plan_reads_fast_downwards_output_sas() {
+/// `plan` on Fast Downward's translation of examples/cubes/tower-3.pddl (the task
+/// crate's fixture) with `search`, in a fresh folder of the test's: the folder and the run.
+fn plan_fast_downwards_task(test: &str, search: &str) -> (PathBuf, Output) {
     let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
-    let tmp = tempdir("sas-input");
+    let tmp = tempdir(test);
     let out = succeeds(
         demoplan()
             .current_dir(&tmp)
             .arg("plan")
             .arg(&sas)
-            .args(["--search", "astar(blind())"]),
+            .args(["--search", search]),
     );
+    (tmp, out)
+}
+
+#[test]
+fn plan_reads_fast_downwards_output_sas() {
+    let (tmp, out) = plan_fast_downwards_task("sas-input", "astar(blind())");
     assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(6));
     // The plan written from Fast Downward's task validates against the PDDL.
     succeeds(
@@ -390,15 +397,7 @@ fn plan_reads_fast_downwards_output_sas() {
 /// benchmark script can split the time between climb and search.
 #[test]
 fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
-    let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
-    let tmp = tempdir("ipdb-statistics");
-    let out = succeeds(
-        demoplan()
-            .current_dir(&tmp)
-            .arg("plan")
-            .arg(&sas)
-            .args(["--search", "astar(ipdb())"]),
-    );
+    let (_, out) = plan_fast_downwards_task("ipdb-statistics", "astar(ipdb())");
     let log = stdout_text(&out);
     assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
     let at = |line: &str| {

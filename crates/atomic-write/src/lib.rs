@@ -9,7 +9,7 @@
 //! be made again and skip the `fsync`s.
 //!
 //! The crate does only this: it never prints, and locking a file against other writers
-//! is the caller's (the command line's `WriteLock`).
+//! is the caller's (`learn::WriteLock`, for the operator library).
 //!
 //! ```
 //! let dir = std::env::temp_dir().join(format!("atomic-write-doc-{}", std::process::id()));

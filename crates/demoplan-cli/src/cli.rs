@@ -252,10 +252,8 @@ pub struct InspectArgs {
     /// Recordings in demoplan's JSON Lines format, or Unity playback logs.
     #[arg(value_name = "RECORDING", required = true)]
     pub files: Vec<PathBuf>,
-    /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
-    /// the format's defaults.
-    #[arg(long, value_name = "FILE")]
-    pub mapping: Option<PathBuf>,
+    #[command(flatten)]
+    pub import: MappingArgs,
 }
 
 /// The options of `import`.
@@ -284,6 +282,24 @@ pub struct SegmentArgs {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub segmentation: SegmentationArgs,
+}
+
+/// `--mapping`: how Unity logs and bags among the inputs are imported (`inspect`, and
+/// every command that segments recordings).
+#[derive(Debug, Args)]
+pub struct MappingArgs {
+    /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
+    /// the format's defaults.
+    #[arg(long, value_name = "FILE")]
+    pub mapping: Option<PathBuf>,
+}
+
+/// How recordings become segments: the grounding thresholds, the activity tree and the
+/// import mapping (`segment`, `timeline`, `learn`).
+#[derive(Debug, Args)]
+pub struct SegmentationArgs {
     /// Grounding thresholds as TOML (docs/grounding.md; fields left out keep the
     /// paper's values).
     #[arg(long, value_name = "FILE")]
@@ -291,10 +307,8 @@ pub struct SegmentArgs {
     /// The activity tree as JSON (`classify --learn ... -o TREE`); default: Table 1.
     #[arg(long, value_name = "FILE")]
     pub tree: Option<PathBuf>,
-    /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
-    /// the format's defaults.
-    #[arg(long, value_name = "FILE")]
-    pub mapping: Option<PathBuf>,
+    #[command(flatten)]
+    pub import: MappingArgs,
 }
 
 /// The options of `classify`.
@@ -334,16 +348,8 @@ pub struct TimelineArgs {
     /// The SVG file to write.
     #[arg(short = 'o', long = "out", value_name = "FILE.svg")]
     pub out: PathBuf,
-    /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
-    /// the format's defaults.
-    #[arg(long, value_name = "FILE")]
-    pub mapping: Option<PathBuf>,
-    /// Grounding thresholds as TOML.
-    #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
-    /// The activity tree as JSON; default: Table 1.
-    #[arg(long, value_name = "FILE")]
-    pub tree: Option<PathBuf>,
+    #[command(flatten)]
+    pub segmentation: SegmentationArgs,
 }
 
 /// The options of `learn`.
@@ -354,10 +360,6 @@ pub struct LearnArgs {
     /// sorted by name, without the simulator's `*.truth.jsonl` and `simulation.json`.
     #[arg(value_name = "RECORDING", required = true)]
     pub files: Vec<PathBuf>,
-    /// Mapping file (TOML) for Unity logs among the inputs (docs/import.md); default:
-    /// the format's defaults.
-    #[arg(long, value_name = "FILE")]
-    pub mapping: Option<PathBuf>,
     /// A library to add to (it may also be the output file).
     #[arg(long, value_name = "FILE")]
     pub library: Option<PathBuf>,
@@ -374,12 +376,8 @@ pub struct LearnArgs {
     /// docs/operators.md.
     #[arg(long, value_name = "KIND", value_enum)]
     pub activities: Option<ActivitiesArg>,
-    /// Grounding thresholds as TOML.
-    #[arg(long, value_name = "FILE")]
-    pub config: Option<PathBuf>,
-    /// The activity tree as JSON; default: Table 1.
-    #[arg(long, value_name = "FILE")]
-    pub tree: Option<PathBuf>,
+    #[command(flatten)]
+    pub segmentation: SegmentationArgs,
     /// How long to wait while another learner writes the same library (its lock,
     /// FILE.lock, is held), with Fast Downward's units (`10`, `10s`, `2m`,
     /// `infinity`); then exit 75.
@@ -465,14 +463,8 @@ pub struct SolveArgs {
     /// The search, in Fast Downward's syntax.
     #[arg(long, value_name = "SEARCH", default_value = "astar(lmcut())")]
     pub search: String,
-    /// Time limit per level, with Fast Downward's units (`60`, `60s`, `2m`).
-    #[arg(long, value_name = "TIME")]
-    pub time_limit: Option<String>,
-    /// Memory limit per level, on the heap the level's run allocates, in binary units
-    /// (`512M`, `2G`; bytes without a unit). `auto`: the memory available when solve
-    /// starts; `infinity`: none. A level that reaches it stops with the outcome `memory`.
-    #[arg(long, value_name = "MEMORY", default_value = "auto")]
-    pub memory_limit: String,
+    #[command(flatten)]
+    pub limits: RunLimitArgs,
     /// Who plans: demoplan or fast-downward.
     #[arg(long, value_name = "PLANNER", default_value = "demoplan")]
     pub planner: String,
@@ -526,8 +518,40 @@ impl ActivitiesArg {
     }
 }
 
+/// The limits of each planning run: a level of `solve`, a run of `reproduce` and
+/// `study`. The time limit's default is the command's (`mut_arg` on its `Args`).
+#[derive(Debug, Args)]
+pub struct RunLimitArgs {
+    /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
+    #[arg(long, value_name = "TIME")]
+    pub time_limit: Option<String>,
+    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
+    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
+    /// the runs going at once; `infinity`: none. A run that reaches it stops with the
+    /// outcome `memory`.
+    #[arg(
+        long,
+        value_name = "MEMORY",
+        default_value = "auto",
+        overrides_with = "memory_limit"
+    )]
+    pub memory_limit: String,
+}
+
+/// Fast Downward run beside demoplan (`reproduce`, `study`).
+#[derive(Debug, Args)]
+pub struct FastDownwardArgs {
+    /// Run the same grid with Fast Downward beside demoplan.
+    #[arg(long)]
+    pub with_fd: bool,
+    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
+    #[arg(long, value_name = "PATH", requires = "with_fd")]
+    pub fd: Option<PathBuf>,
+}
+
 /// The options of `reproduce`.
 #[derive(Debug, Args)]
+#[command(mut_arg("time_limit", |a| a.default_value("60")))]
 pub struct ReproduceArgs {
     /// The output folder (created if missing).
     #[arg(
@@ -537,20 +561,8 @@ pub struct ReproduceArgs {
         default_value = "reproduction"
     )]
     pub out: PathBuf,
-    /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
-    #[arg(long, value_name = "TIME", default_value = "60")]
-    pub time_limit: String,
-    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
-    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
-    /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
-    /// the outcome `memory`.
-    #[arg(
-        long,
-        value_name = "MEMORY",
-        default_value = "auto",
-        overrides_with = "memory_limit"
-    )]
-    pub memory_limit: String,
+    #[command(flatten)]
+    pub limits: RunLimitArgs,
     /// Runs per cell; tables show medians.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=100))]
     pub repeat: u32,
@@ -565,12 +577,8 @@ pub struct ReproduceArgs {
     /// Only these priority levels, e.g. `1,2` (default: every level).
     #[arg(long, value_name = "LIST", value_delimiter = ',')]
     pub prios: Option<Vec<usize>>,
-    /// Run the same grid with Fast Downward beside demoplan.
-    #[arg(long)]
-    pub with_fd: bool,
-    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
-    #[arg(long, value_name = "PATH", requires = "with_fd")]
-    pub fd: Option<PathBuf>,
+    #[command(flatten)]
+    pub fast_downward: FastDownwardArgs,
     /// Seed of the simulated demonstrations.
     #[arg(long, value_name = "N", default_value_t = 7)]
     pub seed: u64,
@@ -589,6 +597,7 @@ pub struct ReproduceArgs {
 
 /// The options of `study`.
 #[derive(Debug, Args)]
+#[command(mut_arg("time_limit", |a| a.default_value("20")))]
 pub struct StudyArgs {
     /// Seeds of the simulated studies: `1-20` (inclusive), `3`, or `1,4,9`.
     #[arg(long, value_name = "RANGE", default_value = "1-20")]
@@ -621,26 +630,10 @@ pub struct StudyArgs {
     /// The simulator's parameters (JSON, as `demoplan simulate --params`).
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
-    /// Time limit per run, with Fast Downward's units (`20`, `20s`, `1m`).
-    #[arg(long, value_name = "TIME", default_value = "20")]
-    pub time_limit: String,
-    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
-    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
-    /// the runs at once (`-j`); `infinity`: none. A run that reaches it is recorded with
-    /// the outcome `memory`.
-    #[arg(
-        long,
-        value_name = "MEMORY",
-        default_value = "auto",
-        overrides_with = "memory_limit"
-    )]
-    pub memory_limit: String,
-    /// Run every cell with Fast Downward too.
-    #[arg(long)]
-    pub with_fd: bool,
-    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
-    #[arg(long, value_name = "PATH", requires = "with_fd")]
-    pub fd: Option<PathBuf>,
+    #[command(flatten)]
+    pub limits: RunLimitArgs,
+    #[command(flatten)]
+    pub fast_downward: FastDownwardArgs,
     /// The output folder (created if missing; a folder with results resumes).
     #[arg(short = 'o', long = "out", value_name = "DIR", default_value = "study")]
     pub out: PathBuf,

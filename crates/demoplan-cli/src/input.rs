@@ -28,6 +28,20 @@ pub fn read_text(path: &Path) -> Result<String, Failure> {
         })
 }
 
+/// The simulator's parameters: the `--params` file's (JSON, docs/recording-format.md), or
+/// the paper study's. A file that is not one is a command line error (36).
+pub fn sim_params(path: Option<&Path>) -> Result<simulate::SimParams, Failure> {
+    let Some(path) = path else {
+        return Ok(simulate::SimParams::default());
+    };
+    serde_json::from_str(&read_text(path)?).map_err(|e| {
+        Failure::plain(
+            ExitCode::USAGE,
+            format!("{}: not a parameter file: {e}", path.display()),
+        )
+    })
+}
+
 /// Finds the domain file of a problem by Fast Downward's naming rules: `domain.pddl`,
 /// `NAME-domain.pddl`, the first three characters of the problem's name followed by
 /// `-domain.pddl` (airport's `p01-domain.pddl`), `domain_NAME.pddl`, `domain-NAME.pddl`,

@@ -120,7 +120,7 @@ pub fn recording_failure(path: &Path, error: &recording::ReadError) -> Failure {
         } else {
             format!("field `{}`", error.field)
         },
-        help: help(&error.kind),
+        help: error.kind.help().map(str::to_string),
         span: (offset, width).into(),
         source: LineSource {
             name: path.display().to_string(),
@@ -132,27 +132,6 @@ pub fn recording_failure(path: &Path, error: &recording::ReadError) -> Failure {
         code: ExitCode::INPUT_ERROR,
         text: render(&diagnostic),
     }
-}
-
-fn help(kind: &recording::ErrorKind) -> Option<String> {
-    use recording::ErrorKind as K;
-    Some(
-        match kind {
-            K::Empty | K::MissingHeader => {
-                "a recording starts with its header line: {\"format\":\"demoplan-recording\",\
-                 \"version\":1,\"id\":...,\"entities\":[...]} (see docs/recording-format.md)"
-            }
-            K::Version(_) => "this demoplan reads version 1 of the format (docs/recording-format.md)",
-            K::NotFinite(_) => {
-                "JSON has no NaN or infinity; leave an entity out of a frame when it was not tracked"
-            }
-            K::Time { .. } => "frames are in time order, each strictly later than the one before",
-            K::UnknownEntity(_) => "every entity a frame names is declared in the header's `entities`",
-            K::Truncated => "the file may have been cut short while it was written",
-            _ => return None,
-        }
-        .to_string(),
-    )
 }
 
 /// Line `n` (1-based) of the file, without its line ending; empty if there is none.

@@ -98,9 +98,11 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 }
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
-/// computing something that belongs in a library crate. The budget is 3,950 today; issue 21 aims at 2,500; what is
-/// left above that is argument declarations (`cli.rs`), file handling and diagnostics,
-/// and the rendering `classify` and `solve` still do themselves.
+/// computing something that belongs in a library crate. The budget is 3,400 today; issue
+/// 21 aims at 2,500. What is left above that: the option declarations and their help
+/// texts (`cli.rs`), diagnostics (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`),
+/// file handling, process plumbing (`memory.rs`, `progress.rs`, the experiments' child
+/// processes), and `learn`'s two phases around the library's lock (`library.rs`).
 #[test]
 fn the_cli_stays_a_thin_shell() {
     fn lines(dir: &Path) -> usize {
@@ -119,5 +121,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 3_950, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 3_400, "crates/demoplan-cli/src has {total} lines");
 }

@@ -7,7 +7,10 @@ use std::path::{Path, PathBuf};
 use std::process::Output;
 
 mod common;
-use common::{demoplan, fixtures, logged_number, succeeds, tempdir, transcript, workspace};
+use common::{
+    demoplan, exits, exits_saying, fixtures, logged_number, simulated_study, stderr_text,
+    stdout_text, succeeds, tempdir, transcript, workspace,
+};
 
 /// Each folder under `fixtures/malformed` holds one mistake: a `domain.pddl`, and a
 /// `problem.pddl` when the mistake is in the problem. The folder name's first word says
@@ -35,7 +38,7 @@ fn malformed_inputs_give_diagnostics_and_exit_codes() {
             .output()
             .unwrap();
         let code = out.status.code();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         match case.split('-').next() {
             Some("syntax" | "semantic") => assert_eq!(code, Some(31), "{case}: {stderr}"),
             Some("unsupported") => assert_eq!(code, Some(34), "{case}: {stderr}"),
@@ -83,15 +86,15 @@ fn check_finds_the_domain_by_fast_downward_naming_rules() {
             .current_dir(&tmp)
             .args(["check", "p01-task.pddl"]),
     );
-    assert!(String::from_utf8_lossy(&out.stdout).contains("(p01-domain.pddl)"));
+    assert!(stdout_text(&out).contains("(p01-domain.pddl)"));
 
     std::fs::remove_file(tmp.join("p01-domain.pddl")).unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["check", "p01-task.pddl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    let out = exits(
+        36,
+        demoplan()
+            .current_dir(&tmp)
+            .args(["check", "p01-task.pddl"]),
+    );
     insta::assert_snapshot!(transcript(&out));
 }
 
@@ -111,11 +114,10 @@ fn command_line_mistakes_exit_36_and_help_exits_0() {
             transcript(&out)
         );
     }
-    let out = demoplan()
-        .args(["check", "/nonexistent/domain.pddl", "/nonexistent/p.pddl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36));
+    let out = exits(
+        36,
+        demoplan().args(["check", "/nonexistent/domain.pddl", "/nonexistent/p.pddl"]),
+    );
     insta::assert_snapshot!(transcript(&out));
     for args in [&["--help"][..], &["--version"], &["check", "--help"]] {
         let out = demoplan().args(args).output().unwrap();
@@ -127,12 +129,10 @@ fn command_line_mistakes_exit_36_and_help_exits_0() {
 fn binary_input_is_an_input_error_not_a_panic() {
     let tmp = tempdir("binary");
     std::fs::write(tmp.join("domain.pddl"), [0xff, 0xfe, 0x28, 0x00, 0x81]).unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["check", "domain.pddl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
+    exits(
+        31,
+        demoplan().current_dir(&tmp).args(["check", "domain.pddl"]),
+    );
 }
 
 #[test]
@@ -145,17 +145,11 @@ fn fmt_rewrites_in_place_keeps_the_header_and_is_idempotent() {
     )
     .unwrap();
     let out = succeeds(demoplan().args(["fmt", file.to_str().unwrap()]));
-    assert!(
-        String::from_utf8_lossy(&out.stderr).contains("1 comment inside the definition dropped")
-    );
+    assert!(stderr_text(&out).contains("1 comment inside the definition dropped"));
     let first = std::fs::read_to_string(&file).unwrap();
     insta::assert_snapshot!(first);
     succeeds(demoplan().args(["fmt", "--check", file.to_str().unwrap()]));
-    let again = demoplan()
-        .args(["fmt", file.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert_eq!(again.status.code(), Some(0));
+    succeeds(demoplan().args(["fmt", file.to_str().unwrap()]));
     assert_eq!(std::fs::read_to_string(&file).unwrap(), first);
 }
 
@@ -164,11 +158,10 @@ fn fmt_check_reports_files_not_in_canonical_form() {
     let tmp = tempdir("fmt-check");
     let file = tmp.join("domain.pddl");
     std::fs::write(&file, "(define (domain d) (:predicates (p)))").unwrap();
-    let out = demoplan()
-        .args(["fmt", "--check", file.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    exits(
+        1,
+        demoplan().args(["fmt", "--check", file.to_str().unwrap()]),
+    );
     assert_eq!(
         std::fs::read_to_string(&file).unwrap(),
         "(define (domain d) (:predicates (p)))"
@@ -180,11 +173,7 @@ fn fmt_leaves_a_malformed_file_untouched() {
     let tmp = tempdir("fmt-bad");
     let file = tmp.join("domain.pddl");
     std::fs::write(&file, "(define (domain d) (:predicates (p))").unwrap();
-    let out = demoplan()
-        .args(["fmt", file.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(31));
+    exits(31, demoplan().args(["fmt", file.to_str().unwrap()]));
     assert_eq!(
         std::fs::read_to_string(&file).unwrap(),
         "(define (domain d) (:predicates (p))"
@@ -246,7 +235,7 @@ fn validate_exit_status_is_the_number_of_invalid_plans() {
         ],
     );
     assert_eq!(out.status.code(), Some(5), "{}", transcript(&out));
-    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stdout = stdout_text(&out);
     assert_eq!(stdout.matches("Plan valid").count(), 1);
     assert_eq!(stdout.matches("Plan invalid").count(), 5);
     insta::assert_snapshot!(transcript(&out));
@@ -258,35 +247,35 @@ fn validate_input_errors_use_the_pddl_exit_codes() {
     // A missing plan file is a command line mistake, found before any plan is judged.
     let tmp = tempdir("validate-errors");
     std::fs::write(tmp.join("tower.plan"), TOWER_PLAN).unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("validate")
-        .arg(cubes.join("domain.pddl"))
-        .arg(cubes.join("tower-3.pddl"))
-        .args(["tower.plan", "missing.plan"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    let out = exits(
+        36,
+        demoplan()
+            .current_dir(&tmp)
+            .arg("validate")
+            .arg(cubes.join("domain.pddl"))
+            .arg(cubes.join("tower-3.pddl"))
+            .args(["tower.plan", "missing.plan"]),
+    );
     assert!(out.stdout.is_empty(), "{}", transcript(&out));
     // Malformed PDDL: 31, with the diagnostic of `check`.
     std::fs::write(tmp.join("problem.pddl"), "(define (problem p) (:domain d)").unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("validate")
-        .arg(cubes.join("domain.pddl"))
-        .args(["problem.pddl", "tower.plan"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("[problem.pddl:"));
+    let out = exits(
+        31,
+        demoplan()
+            .current_dir(&tmp)
+            .arg("validate")
+            .arg(cubes.join("domain.pddl"))
+            .args(["problem.pddl", "tower.plan"]),
+    );
+    assert!(stderr_text(&out).contains("[problem.pddl:"));
     // No plan at all: the usage error of clap, 36.
-    let out = demoplan()
-        .arg("validate")
-        .arg(cubes.join("domain.pddl"))
-        .arg(cubes.join("tower-3.pddl"))
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    exits(
+        36,
+        demoplan()
+            .arg("validate")
+            .arg(cubes.join("domain.pddl"))
+            .arg(cubes.join("tower-3.pddl")),
+    );
 }
 
 // ---------------------------------------------------------------------------------------
@@ -363,7 +352,7 @@ fn planning_is_deterministic() {
     for _ in 0..2 {
         let out = plan_run(&["--search", "astar(hmax())"], &instance, &tmp);
         assert_eq!(out.status.code(), Some(0));
-        let log = String::from_utf8_lossy(&out.stdout).into_owned();
+        let log = stdout_text(&out);
         let expanded = logged_number(&log, "Expanded ");
         seen.push((
             std::fs::read_to_string(tmp.join("sas_plan")).unwrap(),
@@ -373,21 +362,25 @@ fn planning_is_deterministic() {
     assert_eq!(seen[0], seen[1]);
 }
 
-#[test]
-fn plan_reads_fast_downwards_output_sas() {
+/// `plan` on Fast Downward's translation of examples/cubes/tower-3.pddl (the task
+/// crate's fixture) with `search`, in a fresh folder of the test's: the folder and the run.
+fn plan_fast_downwards_task(test: &str, search: &str) -> (PathBuf, Output) {
     let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
-    let tmp = tempdir("sas-input");
+    let tmp = tempdir(test);
     let out = succeeds(
         demoplan()
             .current_dir(&tmp)
             .arg("plan")
             .arg(&sas)
-            .args(["--search", "astar(blind())"]),
+            .args(["--search", search]),
     );
-    assert_eq!(
-        logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
-        Some(6)
-    );
+    (tmp, out)
+}
+
+#[test]
+fn plan_reads_fast_downwards_output_sas() {
+    let (tmp, out) = plan_fast_downwards_task("sas-input", "astar(blind())");
+    assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(6));
     // The plan written from Fast Downward's task validates against the PDDL.
     succeeds(
         demoplan()
@@ -404,16 +397,8 @@ fn plan_reads_fast_downwards_output_sas() {
 /// benchmark script can split the time between climb and search.
 #[test]
 fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
-    let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
-    let tmp = tempdir("ipdb-statistics");
-    let out = succeeds(
-        demoplan()
-            .current_dir(&tmp)
-            .arg("plan")
-            .arg(&sas)
-            .args(["--search", "astar(ipdb())"]),
-    );
-    let log = String::from_utf8_lossy(&out.stdout);
+    let (_, out) = plan_fast_downwards_task("ipdb-statistics", "astar(ipdb())");
+    let log = stdout_text(&out);
     assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
     let at = |line: &str| {
         log.find(line)
@@ -437,7 +422,7 @@ fn translate_writes_output_sas_that_plan_reads_back() {
             .arg("translate")
             .arg(workspace().join("examples/cubes/tower-3.pddl")),
     );
-    assert!(String::from_utf8_lossy(&out.stdout).contains("Translator variables: 18"));
+    assert!(stdout_text(&out).contains("Translator variables: 18"));
     let out = demoplan()
         .current_dir(&tmp)
         .args(["plan", "output.sas", "--alias", "seq-opt-hmax"])
@@ -451,10 +436,7 @@ fn translate_writes_output_sas_that_plan_reads_back() {
         "--search",
         "astar(hmax())",
     ]));
-    assert_eq!(
-        logged_number(&String::from_utf8_lossy(&out.stdout), "Plan cost: "),
-        Some(6)
-    );
+    assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(6));
 }
 
 fn write_task(dir: &Path, domain: &str, problem: &str) -> (PathBuf, PathBuf) {
@@ -476,17 +458,19 @@ fn unsolvable_tasks_exit_11_and_leave_no_plan() {
            (:action b :parameters () :precondition (p) :effect (and (r) (not (p)))))",
         "(define (problem u1) (:domain u) (:init (p)) (:goal (and (q) (r))))",
     );
+    let unsolvable = |d: &Path, p: &Path, search: &str| {
+        let plan = [std::ffi::OsStr::new("plan"), d.as_os_str(), p.as_os_str()];
+        let out = exits(
+            11,
+            demoplan()
+                .current_dir(&tmp)
+                .args(plan)
+                .args(["--search", search]),
+        );
+        stdout_text(&out)
+    };
     std::fs::write(tmp.join("sas_plan"), "(stale)\n").unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("plan")
-        .arg(&d)
-        .arg(&p)
-        .args(["--search", "astar(blind())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(11), "{}", transcript(&out));
-    assert!(String::from_utf8_lossy(&out.stdout)
+    assert!(unsolvable(&d, &p, "astar(blind())")
         .contains("Completely explored state space -- no solution!"));
     assert!(!tmp.join("sas_plan").exists(), "a stale plan file survived");
     // Not even reachable when deletes are ignored: decided before search.
@@ -495,16 +479,7 @@ fn unsolvable_tasks_exit_11_and_leave_no_plan() {
         "(define (domain u) (:predicates (p) (q)) (:action a :parameters () :precondition (q) :effect (p)))",
         "(define (problem u2) (:domain u) (:init) (:goal (p)))",
     );
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("plan")
-        .arg(&d)
-        .arg(&p)
-        .args(["--search", "astar(hmax())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(11), "{}", transcript(&out));
-    assert!(String::from_utf8_lossy(&out.stdout).contains("Goal violated by relaxed reachability"));
+    assert!(unsolvable(&d, &p, "astar(hmax())").contains("Goal violated by relaxed reachability"));
 }
 
 #[test]
@@ -525,7 +500,7 @@ fn limits_stop_the_search_with_exit_23_and_22_and_statistics() {
         &tmp,
     );
     assert_eq!(out.status.code(), Some(23), "{}", transcript(&out));
-    let log = String::from_utf8_lossy(&out.stdout);
+    let log = stdout_text(&out);
     assert!(log.contains("Time limit reached. Abort search."));
     assert!(logged_number(&log, "Expanded ").unwrap() > 0);
     let json = std::fs::read_to_string(&stats).unwrap();
@@ -542,7 +517,7 @@ fn limits_stop_the_search_with_exit_23_and_22_and_statistics() {
         &tmp,
     );
     assert_eq!(out.status.code(), Some(22), "{}", transcript(&out));
-    assert!(String::from_utf8_lossy(&out.stdout).contains("Memory limit has been reached."));
+    assert!(stdout_text(&out).contains("Memory limit has been reached."));
 }
 
 #[test]
@@ -616,16 +591,12 @@ fn malformed_output_sas_is_a_search_input_error() {
         "begin_version\n3\nend_version\nbegin_metric\n7\nend_metric\n",
     )
     .unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args(["plan", "bad.sas", "--search", "astar(blind())"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(33), "{}", transcript(&out));
-    assert!(
-        String::from_utf8_lossy(&out.stderr).contains("bad.sas:5"),
-        "{}",
-        transcript(&out)
+    exits_saying(
+        33,
+        "bad.sas:5",
+        demoplan()
+            .current_dir(&tmp)
+            .args(["plan", "bad.sas", "--search", "astar(blind())"]),
     );
 }
 
@@ -650,22 +621,16 @@ fn path_costs_beyond_32_bits_are_unsupported() {
            (:goal (at c)) (:metric minimize (total-cost)))",
     )
     .unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args([
+    exits_saying(
+        34,
+        "6000000000",
+        demoplan().current_dir(&tmp).args([
             "plan",
             "domain.pddl",
             "problem.pddl",
             "--search",
             "astar(blind())",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(34), "{}", transcript(&out));
-    assert!(
-        String::from_utf8_lossy(&out.stderr).contains("6000000000"),
-        "{}",
-        transcript(&out)
+        ]),
     );
     assert!(!tmp.join("sas_plan").exists());
 }
@@ -692,7 +657,7 @@ fn malformed_recordings_name_file_line_and_field() {
             .args(["inspect", case])
             .output()
             .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         assert_eq!(out.status.code(), Some(31), "{case}: {stderr}");
         assert!(
             stderr.contains(&format!("[{case}:")),
@@ -720,11 +685,10 @@ fn inspect_summarises_the_example_recording() {
 
 #[test]
 fn inspect_of_a_missing_file_is_a_command_line_error() {
-    let out = demoplan()
-        .args(["inspect", "/nonexistent/recording.jsonl"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    exits(
+        36,
+        demoplan().args(["inspect", "/nonexistent/recording.jsonl"]),
+    );
 }
 
 /// `simulate` with no options but `-o` writes the embedded default (the paper's 3 x 4
@@ -854,7 +818,7 @@ fn segment_prints_the_segments_of_the_example_recording() {
     ]));
     let doc: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     let segments = doc["files"][0]["segments"].as_array().unwrap();
-    let table = String::from_utf8_lossy(&out.stdout);
+    let table = stdout_text(&out);
     assert_eq!(table.lines().count(), segments.len() + 2);
     for s in segments {
         for key in [
@@ -901,7 +865,7 @@ fn segment_classify_and_timeline_on_a_simulated_demonstration() {
         "demos/p01-d01.jsonl",
         "demos/p01-d02.jsonl",
     ]));
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = stdout_text(&out);
     for activity in ["Reach", "Take", "Put", "Stack", "Idle"] {
         assert!(text.contains(activity), "no {activity} in\n{text}");
     }
@@ -910,7 +874,7 @@ fn segment_classify_and_timeline_on_a_simulated_demonstration() {
             .current_dir(&tmp)
             .args(["classify", "demos/p01-d01.jsonl"]),
     );
-    assert!(String::from_utf8_lossy(&classify.stdout).contains("agree with the tree"));
+    assert!(stdout_text(&classify).contains("agree with the tree"));
     succeeds(demoplan().current_dir(&tmp).args([
         "classify",
         "--learn",
@@ -966,12 +930,11 @@ fn classify_prints_table_one_and_learns_the_weather_tree() {
             .arg("-o")
             .arg(&tree),
     );
-    let text = String::from_utf8_lossy(&learn.stdout).replace(&tree.display().to_string(), "TREE");
+    let text = stdout_text(&learn).replace(&tree.display().to_string(), "TREE");
     insta::assert_snapshot!("classify-learn-weather", text);
     // The tree file prints as it was learned.
     let printed = succeeds(demoplan().args(["classify", "--tree"]).arg(&tree));
-    assert!(String::from_utf8_lossy(&learn.stdout)
-        .starts_with(&*String::from_utf8_lossy(&printed.stdout)));
+    assert!(stdout_text(&learn).starts_with(&*stdout_text(&printed)));
 }
 
 #[test]
@@ -987,7 +950,7 @@ fn arff_hand_state_tables_segment_and_say_what_they_accepted() {
         "--learn",
         "hand-state.arff",
     ]));
-    assert!(String::from_utf8_lossy(&learn.stdout).contains("25 of 25"));
+    assert!(stdout_text(&learn).contains("25 of 25"));
 }
 
 /// Malformed configuration, tree and ARFF files: exit 31 with file, line and field.
@@ -1067,7 +1030,7 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
             .args(args)
             .output()
             .unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         assert_eq!(out.status.code(), Some(31), "{file}: {stderr}");
         assert!(
             stderr.contains(&format!("[{file}:")),
@@ -1110,7 +1073,7 @@ fn weka_tables_segment_and_classify_through_the_label_map() {
             .current_dir(&tables)
             .args(["classify", "recogniser-labels.txt"]),
     );
-    let stdout = String::from_utf8_lossy(&classify.stdout);
+    let stdout = stdout_text(&classify);
     assert!(
         stdout.starts_with(
             "recogniser-labels.txt: 11 labelled hand frames, 10 agree with the tree (90.91%); \
@@ -1119,7 +1082,7 @@ fn weka_tables_segment_and_classify_through_the_label_map() {
         "{stdout}"
     );
     assert_eq!(
-        String::from_utf8_lossy(&classify.stderr),
+        stderr_text(&classify),
         "warning: recogniser-labels.txt:17: labels the label map does not know, left out: Pour (3 frames)\n"
     );
     // With Pour mapped to Put every frame counts; ToolUse with the object in hand is Put
@@ -1130,7 +1093,7 @@ fn weka_tables_segment_and_classify_through_the_label_map() {
             .args(["classify", "recogniser-labels.txt", "--mapping"])
             .arg(demonstrations().join("pour-is-put.toml")),
     );
-    assert!(String::from_utf8_lossy(&mapped.stdout).starts_with(
+    assert!(stdout_text(&mapped).starts_with(
         "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
     ));
     assert!(mapped.stderr.is_empty(), "{}", transcript(&mapped));
@@ -1147,13 +1110,13 @@ fn learn_reads_hand_state_tables() {
             .args(["learn", "hand-state.arff", "-o"])
             .arg(&library),
     );
-    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stdout = stdout_text(&out);
     assert!(
         stdout.starts_with("hand-state.arff: 5 activities, 5 new operator(s)\n"),
         "{stdout}"
     );
     let cards = demoplan().arg("operators").arg(&library).output().unwrap();
-    let cards = String::from_utf8_lossy(&cards.stdout);
+    let cards = stdout_text(&cards);
     // The Take closes the hand on the object it reached: its effects are the hand's.
     let take = cards
         .split("\n\n")
@@ -1213,7 +1176,7 @@ fn learn_takes_a_folder_and_skips_the_simulators_truth() {
     let folder = tmp.join("folder.json");
     let o = learn(&[sim.as_path()], &folder);
     assert_eq!(
-        String::from_utf8_lossy(&o.stderr),
+        stderr_text(&o),
         format!(
             "{}: 3 recording(s); skipped 4 file(s) of the simulator (*.truth.jsonl, simulation.json)\n",
             sim.display()
@@ -1229,7 +1192,7 @@ fn learn_takes_a_folder_and_skips_the_simulators_truth() {
         &all.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
         &globbed,
     );
-    let stderr = String::from_utf8_lossy(&o.stderr);
+    let stderr = stderr_text(&o);
     assert!(
         stderr.starts_with("skipped 4 file(s) of the simulator, not recordings: "),
         "{stderr}"
@@ -1242,14 +1205,14 @@ fn learn_takes_a_folder_and_skips_the_simulators_truth() {
     let empty = tmp.join("empty");
     std::fs::create_dir_all(&empty).unwrap();
     std::fs::write(empty.join("notes.md"), "nothing here\n").unwrap();
-    let o = demoplan()
-        .arg("learn")
-        .arg(&empty)
-        .arg("-o")
-        .arg(tmp.join("never.json"))
-        .output()
-        .unwrap();
-    assert_eq!(o.status.code(), Some(36), "{}", transcript(&o));
+    exits(
+        36,
+        demoplan()
+            .arg("learn")
+            .arg(&empty)
+            .arg("-o")
+            .arg(tmp.join("never.json")),
+    );
     assert!(!tmp.join("never.json").exists());
 }
 
@@ -1328,7 +1291,7 @@ fn execute_checks_each_step_in_the_cube_world() {
         plan,
         &["--json", "x.json", "--frames", "x.jsonl"],
     );
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = stdout_text(&out);
     assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
     assert!(
         text.contains("step 1 (take left_hand cube_2): ok\n"),
@@ -1358,7 +1321,7 @@ fn execute_names_the_first_step_whose_geometry_fails_and_exits_1() {
     let plan = "(reach left_hand cube_2)\n(put left_hand cube_2 table)\n\
                 (stack left_hand cube_2 cube_1)\n";
     let (out, _) = execute_cubes("execute-fails", plan, &[]);
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = stdout_text(&out);
     assert_eq!(out.status.code(), Some(1), "{}", transcript(&out));
     assert!(
         text.contains(
@@ -1381,27 +1344,16 @@ fn execute_input_errors_exit_31_and_command_line_mistakes_36() {
     assert_eq!(out.status.code(), Some(31), "{}", transcript(&out));
     let (out, _) = execute_cubes("execute-missing", "", &["--frames"]);
     assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
-    let out = demoplan()
-        .args(["execute", "no-domain.pddl", "no-problem.pddl", "no-plan"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+    exits(
+        36,
+        demoplan().args(["execute", "no-domain.pddl", "no-problem.pddl", "no-plan"]),
+    );
 }
 
 /// The library of the embedded default study, learned through the command line.
 fn learned_library(test: &str) -> PathBuf {
     let tmp = tempdir(test);
-    succeeds(demoplan().args(["simulate", "-o"]).arg(tmp.join("sim")));
-    let mut recordings: Vec<PathBuf> = std::fs::read_dir(tmp.join("sim"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| {
-            let name = p.file_name().unwrap().to_string_lossy().into_owned();
-            name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
-        })
-        .collect();
-    recordings.sort();
-    assert_eq!(recordings.len(), 12);
+    let recordings = simulated_study(&tmp.join("sim"));
     let library = tmp.join("library.json");
     // Half first, then the rest added to the library: incremental learning.
     succeeds(
@@ -1420,7 +1372,7 @@ fn learned_library(test: &str) -> PathBuf {
         .arg(&library)
         .output()
         .unwrap();
-    let text = String::from_utf8_lossy(&rest.stdout).into_owned();
+    let text = stdout_text(&rest);
     assert_eq!(rest.status.code(), Some(0), "{}", transcript(&rest));
     // The sixth recording was in both batches and is counted once.
     assert!(
@@ -1452,12 +1404,30 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .arg(&library)
         .output()
         .unwrap();
-    let md = String::from_utf8_lossy(&cards.stdout).into_owned();
+    let md = stdout_text(&cards);
     assert_eq!(cards.status.code(), Some(0), "{}", transcript(&cards));
     assert!(md.contains("## reach (Reach, count "), "{md}");
     assert!(md.contains("| fact | precondition | effect |"), "{md}");
     // Levels, then the priority-2 domain and a problem that parse in demoplan.
-    succeeds(demoplan().arg("domain").arg(&library));
+    let levels = succeeds(demoplan().arg("domain").arg(&library));
+    let levels = stdout_text(&levels);
+    let mut rows = levels.lines();
+    assert_eq!(
+        rows.next(),
+        Some(" prio operators  per type (reach, take, put, stack, idle)"),
+        "{levels}"
+    );
+    // A row per level, from priority 1, each with as many operators as its five types.
+    for (prio, row) in (1..).zip(rows) {
+        let fields: Vec<usize> = row
+            .split(|c: char| !c.is_ascii_digit())
+            .filter(|f| !f.is_empty())
+            .map(|f| f.parse().unwrap())
+            .collect();
+        assert_eq!(fields.len(), 7, "{row}");
+        assert_eq!(fields[0], prio, "{levels}");
+        assert_eq!(fields[1], fields[2..].iter().sum::<usize>(), "{row}");
+    }
     let domain = tmp.join("prio-2.pddl");
     succeeds(
         demoplan()
@@ -1484,7 +1454,7 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .arg(&plan)
         .output()
         .unwrap();
-    let log = String::from_utf8_lossy(&solve.stdout).into_owned();
+    let log = stdout_text(&solve);
     assert_eq!(solve.status.code(), Some(0), "{}", transcript(&solve));
     assert!(log.contains("Solution found at priority 1 "), "{log}");
     // With every Idle an activity of its own (`--activities runs`), the most frequent
@@ -1514,7 +1484,7 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         .arg(tmp.join("runs.plan"))
         .output()
         .unwrap();
-    let widened_log = String::from_utf8_lossy(&widened.stdout).into_owned();
+    let widened_log = stdout_text(&widened);
     assert_eq!(widened.status.code(), Some(0), "{}", transcript(&widened));
     assert!(widened_log.contains("relaxed-unreachable"), "{widened_log}");
     assert!(
@@ -1522,17 +1492,17 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         "{widened_log}"
     );
     // One library counts one kind of activity.
-    let mixed = demoplan()
-        .arg("learn")
-        .arg(&recordings[0])
-        .arg("--library")
-        .arg(&runs)
-        .args(["--activities", "settled", "-o"])
-        .arg(tmp.join("mixed.json"))
-        .output()
-        .unwrap();
-    assert_eq!(mixed.status.code(), Some(36), "{}", transcript(&mixed));
-    assert!(String::from_utf8_lossy(&mixed.stderr).contains("`runs` activities"));
+    let mixed = exits(
+        36,
+        demoplan()
+            .arg("learn")
+            .arg(&recordings[0])
+            .arg("--library")
+            .arg(&runs)
+            .args(["--activities", "settled", "-o"])
+            .arg(tmp.join("mixed.json")),
+    );
+    assert!(stderr_text(&mixed).contains("`runs` activities"));
     assert!(!tmp.join("mixed.json").exists());
     // The plan validates on the domain it was found in and executes in the cube world.
     let level: String = log
@@ -1570,20 +1540,16 @@ fn learn_operators_domain_problem_and_solve_work_together() {
         "{\"format\": \"demoplan-library\", \"version\": 1,\n  \"lambda\": }",
     )
     .unwrap();
-    let bad = demoplan()
-        .arg("learn")
-        .arg(tmp.join("sim/p01-d01.jsonl"))
-        .arg("--library")
-        .arg(&damaged)
-        .arg("-o")
-        .arg(&damaged)
-        .output()
-        .unwrap();
-    assert_eq!(bad.status.code(), Some(31), "{}", transcript(&bad));
-    assert!(
-        String::from_utf8_lossy(&bad.stderr).contains("damaged.json:2"),
-        "{}",
-        transcript(&bad)
+    exits_saying(
+        31,
+        "damaged.json:2",
+        demoplan()
+            .arg("learn")
+            .arg(tmp.join("sim/p01-d01.jsonl"))
+            .arg("--library")
+            .arg(&damaged)
+            .arg("-o")
+            .arg(&damaged),
     );
     assert!(std::fs::read_to_string(&damaged)
         .unwrap()
@@ -1592,7 +1558,7 @@ fn learn_operators_domain_problem_and_solve_work_together() {
     std::fs::write(&newer, "{\"format\": \"demoplan-library\", \"version\": 2}").unwrap();
     let bad = demoplan().arg("operators").arg(&newer).output().unwrap();
     assert_eq!(bad.status.code(), Some(31), "{}", transcript(&bad));
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("newer than this demoplan reads"));
+    assert!(stderr_text(&bad).contains("newer than this demoplan reads"));
 }
 
 #[test]
@@ -1606,7 +1572,7 @@ fn reproduce_writes_every_artefact_on_a_reduced_grid() {
         .args(["--prios", "1,3", "--goals", "1,2,3", "--time-limit", "5"])
         .output()
         .unwrap();
-    let log = String::from_utf8_lossy(&run.stdout).into_owned();
+    let log = stdout_text(&run);
     assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
     assert!(log.contains("Table 3: A* with iPDB"), "{log}");
     let read = |name: &str| std::fs::read_to_string(out.join(name)).unwrap();
@@ -1729,7 +1695,7 @@ fn study_writes_every_file_and_resumes() {
     let out = tmp.join("out");
     let run = reduced_study(&out);
     assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
-    let stdout = String::from_utf8_lossy(&run.stdout).into_owned();
+    let stdout = stdout_text(&run);
     // 2 seeds x 2 groupings x 2 heights x 2 planners x 3 levels.
     assert!(stdout.contains("48 runs (48 computed now"), "{stdout}");
     let read = |name: &str| std::fs::read_to_string(out.join(name)).unwrap();
@@ -1808,7 +1774,7 @@ fn study_writes_every_file_and_resumes() {
     let again = reduced_study(&out);
     assert_eq!(again.status.code(), Some(0), "{}", transcript(&again));
     assert!(
-        String::from_utf8_lossy(&again.stdout).contains("48 runs (0 computed now, 48 from earlier"),
+        stdout_text(&again).contains("48 runs (0 computed now, 48 from earlier"),
         "{}",
         transcript(&again)
     );
@@ -1823,7 +1789,7 @@ fn study_writes_every_file_and_resumes() {
     let resumed = reduced_study(&out);
     assert_eq!(resumed.status.code(), Some(0), "{}", transcript(&resumed));
     assert!(
-        String::from_utf8_lossy(&resumed.stdout).contains("48 runs (1 computed now"),
+        stdout_text(&resumed).contains("48 runs (1 computed now"),
         "{}",
         transcript(&resumed)
     );
@@ -1845,7 +1811,7 @@ fn a_study_in_child_processes_gives_the_runs_of_one_in_this_process() {
                 .args(["--seeds", "3", "--hands", "1,2", "--heights", "2"])
                 .args(["--time-limit", "60", "-j", jobs]),
         );
-        let stdout = String::from_utf8_lossy(&done.stdout).into_owned();
+        let stdout = stdout_text(&done);
         assert!(stdout.contains(&format!("{jobs} at a time")), "{stdout}");
         let text = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
         let mut records: Vec<serde_json::Value> = text
@@ -1929,7 +1895,7 @@ fn study_refuses_bad_options_before_writing_anything() {
             "{args:?}: {}",
             transcript(&out)
         );
-        let err = String::from_utf8_lossy(&out.stderr);
+        let err = stderr_text(&out);
         assert!(err.contains(what), "{args:?}: {err}");
         assert!(!tmp.join("out").exists(), "{args:?} wrote output");
     }
@@ -1951,16 +1917,16 @@ fn widening_library_and_problem(tmp: &Path) -> (PathBuf, PathBuf) {
 fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
     let tmp = tempdir("unknown-planner");
     let (library, problem) = widening_library_and_problem(&tmp);
-    let out = demoplan()
-        .current_dir(&tmp)
-        .arg("solve")
-        .arg(&library)
-        .arg(&problem)
-        .args(["--planner", "lama"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
-    let err = String::from_utf8_lossy(&out.stderr);
+    let out = exits(
+        36,
+        demoplan()
+            .current_dir(&tmp)
+            .arg("solve")
+            .arg(&library)
+            .arg(&problem)
+            .args(["--planner", "lama"]),
+    );
+    let err = stderr_text(&out);
     assert!(
         err.contains("--planner lama: expected demoplan or fast-downward"),
         "{err}"
@@ -1992,19 +1958,19 @@ fn fast_downward_backends_say_clearly_when_it_is_missing() {
             .args(&args)
             .output()
             .unwrap();
-        let err = String::from_utf8_lossy(&out.stderr).into_owned();
+        let err = stderr_text(&out);
         assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
         assert!(err.contains("Fast Downward not found"), "{err}");
         assert!(err.contains("DEMOPLAN_FD"), "{err}");
     }
-    let out = demoplan()
-        .current_dir(&tmp)
-        .env("DEMOPLAN_FD", tmp.join("nowhere/fast-downward.py"))
-        .args(["reproduce", "-o", "out", "--with-fd"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("is not a file"));
+    let out = exits(
+        36,
+        demoplan()
+            .current_dir(&tmp)
+            .env("DEMOPLAN_FD", tmp.join("nowhere/fast-downward.py"))
+            .args(["reproduce", "-o", "out", "--with-fd"]),
+    );
+    assert!(stderr_text(&out).contains("is not a file"));
     // Nothing was written before the check.
     assert!(!tmp.join("out").exists());
 }
@@ -2031,14 +1997,14 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
 
     let full = std::path::Path::new("/dev/full");
     if full.exists() {
-        let out = demoplan()
-            .args(["fmt", "--stdout"])
-            .arg(&problem)
-            .stdout(std::fs::File::create(full).unwrap())
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(35), "{}", transcript(&out));
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let out = exits(
+            35,
+            demoplan()
+                .args(["fmt", "--stdout"])
+                .arg(&problem)
+                .stdout(std::fs::File::create(full).unwrap()),
+        );
+        let stderr = stderr_text(&out);
         assert!(
             stderr.contains("cannot write to standard output"),
             "{stderr}"
@@ -2168,7 +2134,7 @@ fn learn_solve_and_execute_on_unity_logs() {
             .args(&logs)
             .args(["-o", "lib.json"]),
     );
-    let text = String::from_utf8_lossy(&learn.stdout).into_owned();
+    let text = stdout_text(&learn);
     for kind in ["Reach", "Take", "Put", "Stack"] {
         let line = text
             .lines()
@@ -2180,7 +2146,7 @@ fn learn_solve_and_execute_on_unity_logs() {
     let run = |args: &[&str]| {
         let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
         assert_eq!(out.status.code(), Some(0), "{args:?}: {}", transcript(&out));
-        String::from_utf8_lossy(&out.stdout).into_owned()
+        stdout_text(&out)
     };
     run(&[
         "problem",
@@ -2225,7 +2191,7 @@ fn inspect_segment_and_timeline_read_unity_logs_directly() {
         .args(["segment", log.to_str().unwrap()])
         .output()
         .unwrap();
-    let text = String::from_utf8_lossy(&segments.stdout);
+    let text = stdout_text(&segments);
     assert!(text.contains("Stack") && text.contains("Reach"), "{text}");
     // A mapping that ignores the cubes leaves nothing to stack.
     std::fs::write(
@@ -2243,7 +2209,7 @@ fn inspect_segment_and_timeline_read_unity_logs_directly() {
         ])
         .output()
         .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = stdout_text(&out);
     assert!(!text.contains("Stack"), "{}", transcript(&out));
 }
 
@@ -2263,19 +2229,17 @@ fn import_name_clash_exits_36_before_writing_anything() {
         tmp.join("first.json"),
     )
     .unwrap();
-    let out = demoplan()
-        .current_dir(&tmp)
-        .args([
+    let out = exits(
+        36,
+        demoplan().current_dir(&tmp).args([
             "import",
             "first.json",
             "a/log.json",
             "b/log.json",
             "-o",
             "out",
-        ])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(36), "{}", transcript(&out));
+        ]),
+    );
     insta::assert_snapshot!(transcript(&out));
     assert!(!tmp.join("out").exists(), "something was written");
 }
@@ -2303,7 +2267,7 @@ fn malformed_unity_logs_and_mappings_name_file_place_and_field() {
             cmd.arg(case);
         }
         let out = cmd.arg("-o").arg(&out_dir).output().unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         assert_eq!(out.status.code(), Some(31), "{case}: {stderr}");
         assert!(
             stderr.contains(case.as_str()),
@@ -2356,7 +2320,7 @@ fn import_peak_heap_does_not_grow_with_the_log() {
             "out",
             "--peak-heap",
         ]));
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         let peak: u64 = stderr
             .split("peak heap: ")
             .nth(1)
@@ -2407,7 +2371,7 @@ fn one_mapping_file_serves_classify_and_the_unity_commands() {
             .arg(&mapping),
     );
     // Pour is Put by the file's [labels]: no frame is left out.
-    assert!(String::from_utf8_lossy(&classify.stdout).starts_with(
+    assert!(stdout_text(&classify).starts_with(
         "recogniser-labels.txt: 14 labelled hand frames, 13 agree with the tree (92.86%)\n"
     ));
     assert!(classify.stderr.is_empty(), "{}", transcript(&classify));
@@ -2419,7 +2383,7 @@ fn one_mapping_file_serves_classify_and_the_unity_commands() {
             .arg("--mapping")
             .arg(&mapping),
     );
-    assert!(String::from_utf8_lossy(&segment.stdout).contains("Stack"));
+    assert!(stdout_text(&segment).contains("Stack"));
 }
 
 /// A header of `n` cubes, one line (issue 23).
@@ -2444,7 +2408,7 @@ fn recordings_over_the_entity_and_line_limits_exit_31_naming_where() {
     std::fs::write(&many, format!("{}\n{{\"t\":0}}\n", header_of_cubes(65_535))).unwrap();
     for command in ["inspect", "segment"] {
         let out = demoplan().arg(command).arg(&many).output().unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        let stderr = stderr_text(&out);
         assert_eq!(out.status.code(), Some(31), "{command}: {stderr}");
         assert!(stderr.contains("many.jsonl:1:"), "{command}: {stderr}");
         assert!(stderr.contains("field `entities`"), "{command}: {stderr}");
@@ -2459,7 +2423,7 @@ fn recordings_over_the_entity_and_line_limits_exit_31_naming_where() {
     text.push_str("}\n");
     std::fs::write(&long, text).unwrap();
     let out = demoplan().arg("inspect").arg(&long).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stderr = stderr_text(&out);
     assert_eq!(out.status.code(), Some(31), "{stderr}");
     assert!(stderr.contains("long.jsonl:3:"), "{stderr}");
     assert!(
@@ -2495,7 +2459,7 @@ fn assert_stopped_by_itself(out: &Output) {
         transcript(out)
     );
     assert!(
-        !String::from_utf8_lossy(&out.stderr).contains("panicked"),
+        !stderr_text(out).contains("panicked"),
         "{}",
         transcript(out)
     );
@@ -2509,12 +2473,11 @@ fn solve_records_a_level_out_of_memory_and_exits_12() {
     let library = learned_library("solve-memory");
     let tmp = library.parent().unwrap().to_path_buf();
     let problem = tmp.join("goal-5.pddl");
-    let p = demoplan()
-        .args(["problem", "--paper-goal", "5", "-o"])
-        .arg(&problem)
-        .output()
-        .unwrap();
-    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    succeeds(
+        demoplan()
+            .args(["problem", "--paper-goal", "5", "-o"])
+            .arg(&problem),
+    );
     let plan = tmp.join("plan");
     let solve = demoplan()
         .arg("solve")
@@ -2526,7 +2489,7 @@ fn solve_records_a_level_out_of_memory_and_exits_12() {
         .output()
         .unwrap();
     assert_stopped_by_itself(&solve);
-    let log = String::from_utf8_lossy(&solve.stdout).into_owned();
+    let log = stdout_text(&solve);
     assert_eq!(solve.status.code(), Some(12), "{}", transcript(&solve));
     assert!(
         log.contains("No plan: some level reached its memory limit (exit 12)."),
@@ -2547,12 +2510,11 @@ fn solve_records_a_level_out_of_memory_and_exits_12() {
     // Without the limit the same library plans (goal 1: goal 5 takes LM-cut about 40 s
     // in the debug build).
     let goal_1 = tmp.join("goal-1.pddl");
-    let p = demoplan()
-        .args(["problem", "--paper-goal", "1", "-o"])
-        .arg(&goal_1)
-        .output()
-        .unwrap();
-    assert_eq!(p.status.code(), Some(0), "{}", transcript(&p));
+    succeeds(
+        demoplan()
+            .args(["problem", "--paper-goal", "1", "-o"])
+            .arg(&goal_1),
+    );
     let unlimited = demoplan()
         .arg("solve")
         .arg(&library)
@@ -2574,18 +2536,14 @@ fn solve_records_a_level_out_of_memory_and_exits_12() {
         transcript(&unlimited)
     );
     // A memory limit that is not one is a command line error.
-    let bad = demoplan()
-        .arg("solve")
-        .arg(&library)
-        .arg(&problem)
-        .args(["--memory-limit", "lots"])
-        .output()
-        .unwrap();
-    assert_eq!(bad.status.code(), Some(36), "{}", transcript(&bad));
-    assert!(
-        String::from_utf8_lossy(&bad.stderr).contains("--memory-limit"),
-        "{}",
-        transcript(&bad)
+    exits_saying(
+        36,
+        "--memory-limit",
+        demoplan()
+            .arg("solve")
+            .arg(&library)
+            .arg(&problem)
+            .args(["--memory-limit", "lots"]),
     );
 }
 

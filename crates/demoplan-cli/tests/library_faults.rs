@@ -15,7 +15,7 @@ use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
 mod common;
-use common::{demoplan, tempdir};
+use common::{demoplan, simulated_study, tempdir};
 
 /// Runs a command to its end; it must succeed.
 fn run(cmd: &mut Command) {
@@ -31,21 +31,7 @@ fn run(cmd: &mut Command) {
 /// The paper's simulated study (12 recordings of about 1 MB), made once.
 fn study() -> &'static [PathBuf] {
     static STUDY: OnceLock<Vec<PathBuf>> = OnceLock::new();
-    STUDY.get_or_init(|| {
-        let dir = tempdir("study");
-        run(demoplan().arg("simulate").arg("-o").arg(&dir));
-        let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| {
-                let name = p.file_name().unwrap().to_string_lossy().into_owned();
-                name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
-            })
-            .collect();
-        files.sort();
-        assert_eq!(files.len(), 12);
-        files
-    })
+    STUDY.get_or_init(|| simulated_study(&tempdir("study")))
 }
 
 /// A simulated session of `frames` frames (90 fps), written with the recording writer.
@@ -119,17 +105,9 @@ fn a_learner_killed_at_any_moment_leaves_the_old_or_the_new_library() {
     let library = dir.join("library.json");
     run(demoplan().arg("learn").arg(&long).arg("-o").arg(&library));
     let old = std::fs::read(&library).unwrap();
-    let small = &study()[0];
     let learner = || {
-        let mut cmd = demoplan();
-        cmd.arg("learn")
-            .arg(small)
-            .arg("--library")
-            .arg(&library)
-            .arg("-o")
-            .arg(&library)
-            .stdout(Stdio::null())
-            .stderr(Stdio::null());
+        let mut cmd = add_to(&library, &study()[..1]);
+        cmd.stdout(Stdio::null()).stderr(Stdio::null());
         cmd
     };
     // Calibration: the new bytes, the time a whole run takes and the time its temporary
@@ -255,15 +233,8 @@ fn concurrent_learners_of_one_library_lose_no_counts() {
         let learners: Vec<_> = [&files[1..split], &files[split..]]
             .iter()
             .map(|part| {
-                demoplan()
-                    .arg("learn")
-                    .args(*part)
-                    .arg("--library")
-                    .arg(&library)
-                    .arg("-o")
-                    .arg(&library)
-                    .arg("--lock-timeout")
-                    .arg("infinity")
+                add_to(&library, part)
+                    .args(["--lock-timeout", "infinity"])
                     .stdout(Stdio::null())
                     .stderr(Stdio::piped())
                     .spawn()
@@ -319,13 +290,7 @@ fn a_held_lock_makes_a_learner_wait_or_give_up() {
     let before = std::fs::read(&library).unwrap();
     let lock = hold_lock(&library);
 
-    let out = demoplan()
-        .arg("learn")
-        .arg(&files[1])
-        .arg("--library")
-        .arg(&library)
-        .arg("-o")
-        .arg(&library)
+    let out = add_to(&library, &files[1..2])
         .args(["--lock-timeout", "0.2s"])
         .output()
         .unwrap();
@@ -338,13 +303,7 @@ fn a_held_lock_makes_a_learner_wait_or_give_up() {
     );
     assert_eq!(std::fs::read(&library).unwrap(), before);
 
-    let mut waiting = demoplan()
-        .arg("learn")
-        .arg(&files[1])
-        .arg("--library")
-        .arg(&library)
-        .arg("-o")
-        .arg(&library)
+    let mut waiting = add_to(&library, &files[1..2])
         .args(["--lock-timeout", "infinity"])
         .stdout(Stdio::null())
         .stderr(Stdio::null())

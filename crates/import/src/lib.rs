@@ -50,6 +50,7 @@
 
 mod assemble;
 mod axes;
+mod batch;
 mod error;
 mod glob;
 mod mapping;
@@ -64,6 +65,7 @@ pub use assemble::{
     Source, SOURCE_PASSES,
 };
 pub use axes::{Axes, QuaternionOrder, SignedAxis};
+pub use batch::{formats, plan_import, PlanError, Planned};
 pub use error::{ImportError, InputError, Location, Problem};
 pub use mapping::{
     native_name, strip_prefix, BagMapping, ContactSource, EntityRule, Format, GraspSource, Mapping,

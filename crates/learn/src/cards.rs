@@ -6,7 +6,21 @@ use std::fmt::Write as _;
 
 use segment::Activity;
 
-use crate::{domain, per_type, Library, Ranked};
+use crate::{domain, per_type, Level, Library, Ranked};
+
+/// The priority levels, a line each: the priority, its operators, and how many of each
+/// type (what `domain` lists without an output file).
+pub fn levels_table(levels: &[Level<'_>]) -> String {
+    let mut s = format!(
+        "{:>5} {:>9}  per type (reach, take, put, stack, idle)\n",
+        "prio", "operators"
+    );
+    for l in levels {
+        let counts = per_type(&l.operators);
+        let _ = writeln!(s, "{:>5} {:>9}  {:?}", l.prio, l.operators.len(), counts);
+    }
+    s
+}
 
 /// Per type: activities, operators, and each operator's count and cost.
 pub fn summary_table(library: &Library) -> String {

@@ -26,19 +26,26 @@
 
 mod cards;
 mod domain;
+mod files;
 mod hash;
 mod inputs;
 mod library;
 mod listing;
+mod lock;
 mod operator;
 mod pipeline;
 mod timeline;
+mod update;
 
-pub use cards::{cards_markdown, cards_text, domain_text, summary_table};
+pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
 pub use domain::{
     action, domain, domain_name, levels, operator_subset, paper_goal_tower, pddl_predicate,
     per_type, problem, tower_goal, DomainOptions, Level, Scene, Tower, TowerError, DEFAULT_CUBES,
     DEFAULT_HANDS,
+};
+pub use files::{
+    arff_reader, hand_table, labelled_frames, read_truth, segment_arff, segment_path, FileError,
+    Labelled, ARFF_FRAME_RATE,
 };
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};
@@ -46,9 +53,11 @@ pub use library::{
     cost, display_name, Added, Entry, Library, LibraryError, Provenance, Ranked, RecordingInfo,
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION,
 };
+pub use lock::{lock_path, resolve_target, LockError, Waiting, WriteLock};
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
 pub use pipeline::{
     activities, add_frames, recording_hash, segment_frames, segment_reader, segment_with, Grouping,
     HandsGrounded, Observer, Segmented, StateAt,
 };
 pub use timeline::{activity_color, timeline, Signals};
+pub use update::{LibraryFileError, Update, UpdateError, Updated};

@@ -98,6 +98,30 @@ impl ErrorKind {
             ErrorKind::LineTooLong { .. } => "line-too-long",
         }
     }
+
+    /// What to do about the error, for the people reading the message; `None` where the
+    /// message says it all.
+    pub fn help(&self) -> Option<&'static str> {
+        use ErrorKind as K;
+        Some(match self {
+            K::Empty | K::MissingHeader => {
+                "a recording starts with its header line: {\"format\":\"demoplan-recording\",\
+                 \"version\":1,\"id\":...,\"entities\":[...]} (see docs/recording-format.md)"
+            }
+            K::Version(_) => {
+                "this demoplan reads version 1 of the format (docs/recording-format.md)"
+            }
+            K::NotFinite(_) => {
+                "JSON has no NaN or infinity; leave an entity out of a frame when it was not tracked"
+            }
+            K::Time { .. } => "frames are in time order, each strictly later than the one before",
+            K::UnknownEntity(_) => {
+                "every entity a frame names is declared in the header's `entities`"
+            }
+            K::Truncated => "the file may have been cut short while it was written",
+            _ => return None,
+        })
+    }
 }
 
 impl ReadError {

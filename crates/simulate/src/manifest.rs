@@ -3,10 +3,14 @@
 //! demonstration its files, hand, task, placements, frames and duration) and a listing
 //! line per demonstration.
 
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
 use serde_json::json;
 
 use crate::params::SimParams;
 use crate::study::{Demonstration, Study};
+use crate::truth::{TruthFrame, TruthWriter};
 
 /// Name of the manifest written beside the recordings.
 pub const MANIFEST: &str = "simulation.json";
@@ -35,6 +39,33 @@ impl Demonstration {
         format!("{}.truth.jsonl", self.id)
     }
 
+    /// Renders the demonstration frame by frame: its recording to `recording` and its
+    /// ground truth to `truth`, in step; says what was written.
+    pub fn write(&self, recording: impl Write, truth: impl Write) -> std::io::Result<Written> {
+        let mut truth = TruthWriter::new(truth, &self.truth_header(), self.header())?;
+        let mut writer =
+            recording::Writer::new(recording, self.header()).map_err(std::io::Error::other)?;
+        let (mut frames, mut first, mut last) = (0u64, 0.0, 0.0);
+        let mut frame = recording::Frame::default();
+        let mut t = TruthFrame::default();
+        let mut render = self.frames();
+        while render.next_into(&mut frame, &mut t) {
+            writer.write_frame(&frame).map_err(std::io::Error::other)?;
+            truth.write(&t)?;
+            if frames == 0 {
+                first = frame.time;
+            }
+            last = frame.time;
+            frames += 1;
+        }
+        writer.finish().map_err(std::io::Error::other)?;
+        truth.finish()?.flush()?;
+        Ok(Written {
+            frames,
+            seconds: last - first,
+        })
+    }
+
     fn hand_name(&self) -> &'static str {
         self.hand.map_or("both", |h| h.name())
     }
@@ -53,6 +84,16 @@ impl Demonstration {
             placements.join(", ")
         )
     }
+}
+
+/// The ground truth beside a simulated recording: `NAME.truth.jsonl` for `NAME.jsonl`.
+pub fn truth_path(recording: &Path) -> PathBuf {
+    let name = recording
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let stem = name.strip_suffix(".jsonl").unwrap_or(&name);
+    recording.with_file_name(format!("{stem}.truth.jsonl"))
 }
 
 /// The manifest of a study simulated with `seed` and `params`, whose demonstrations were
@@ -105,4 +146,30 @@ pub fn manifest(study: &Study, seed: u64, params: &SimParams, written: &[Written
         "recordings": recordings,
     });
     serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_demonstration_writes_its_recording_and_its_truth_in_step() {
+        let study = crate::study(&SimParams::default(), 7, 1, 1).unwrap();
+        let demo = &study.demonstrations[0];
+        let (mut recording, mut truth) = (Vec::new(), Vec::new());
+        let written = demo.write(&mut recording, &mut truth).unwrap();
+        assert!(written.frames > 0 && written.seconds > 0.0, "{written:?}");
+        let lines = recording.iter().filter(|&&b| b == b'\n').count() as u64;
+        assert_eq!(
+            lines,
+            written.frames + 1,
+            "a header line, then a line a frame"
+        );
+        let (_, frames) = crate::read_truth(truth.as_slice(), demo.header()).unwrap();
+        assert_eq!(frames.len() as u64, written.frames);
+        assert_eq!(
+            truth_path(Path::new("out/p1-d1.jsonl")),
+            Path::new("out").join(demo.truth_name().replace(&demo.id, "p1-d1"))
+        );
+    }
 }

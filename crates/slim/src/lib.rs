@@ -9,12 +9,14 @@
 
 mod fast_downward;
 mod logged;
+mod printout;
 mod run;
 
 use std::time::{Duration, Instant};
 
 pub use fast_downward::{parse_log, FastDownward, FdLog};
 pub use logged::{plan_logged, LoggedRun, PlanInput, RunError, StatisticsRecord};
+pub use printout::{compare_full, level_header, level_row};
 pub use run::{
     plan_task, translate_checked, translate_checked_within, MemoryProbe, Outcome, PlanRun,
     RunLimits, Translated,

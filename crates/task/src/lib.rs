@@ -28,6 +28,7 @@
 
 pub mod limits;
 pub mod sas_file;
+pub mod units;
 
 pub use limits::{deadline_after, Deadline, Limit, Limits};
 

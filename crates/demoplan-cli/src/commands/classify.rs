@@ -10,7 +10,7 @@
 use std::path::Path;
 
 use grounding::HandFacts;
-use segment::{Activity, ActivityTree, Confusion, LabelMap, UnknownLabels, C45};
+use segment::{Activity, ActivityTree, Confusion, LabelMap, C45};
 
 use crate::cli::ClassifyArgs;
 use crate::commands::demo_input;
@@ -55,64 +55,29 @@ pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// What a file's labelled frames are: whether the hands' states say `handOpen`, and
-/// the frames left out.
-struct Labelled {
-    hand_state: bool,
-    /// Frames left out: their labels are not in the label map.
-    left_out: usize,
-}
-
-/// The labelled frames of a file, each given to `each` as it is read, with its label.
-/// An ARFF table is read a row at a time and its labels go through the label map; those
-/// it does not know are left out and named on standard error, once per file.
+/// [`learn::labelled_frames`], with what the ARFF reader accepted said on standard
+/// error.
 fn labelled(
     path: &Path,
     config: &grounding::GroundingConfig,
     map: &LabelMap,
     each: &mut dyn FnMut(HandFacts, Activity),
-) -> Result<Labelled, Failure> {
-    if demo_input::is_arff(path) {
-        let table = demo_input::hand_table(path)?;
-        let mut unknown = UnknownLabels::default();
-        demo_input::arff_frames(path, &table, |f| {
-            if let Some(a) = unknown.activity(map, f) {
-                each(f.hand, a);
-            }
-        })?;
-        if let Some(w) = unknown.warning() {
-            demo_input::warn(path, &[w]);
-        }
-        return Ok(Labelled {
-            hand_state: table.has_hand_state(),
-            left_out: unknown.left_out(),
-        });
-    }
-    let tree = ActivityTree::table_one();
-    let mut grounded = learn::HandsGrounded::default();
-    let segmented = demo_input::segment_recording(path, None, config, &tree, &mut grounded)?;
-    let truth = demo_input::read_truth(path, &segmented.header)?;
-    for (hand, activity) in grounded.labelled(&truth) {
-        each(hand, activity);
-    }
-    Ok(Labelled {
-        hand_state: true,
-        left_out: 0,
-    })
+) -> Result<learn::Labelled, Failure> {
+    learn::labelled_frames(path, config, map, each, &mut |w| demo_input::warn(path, w))
+        .map_err(demo_input::file_failure)
 }
 
 fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
     let learner = C45::default();
     // A nominal data set that is not a hand-state table: learn it as it is.
     if let [path] = args.files.as_slice() {
-        if demo_input::is_arff(path) {
-            let hand_state = segment::is_hand_state(demo_input::arff_reader(path)?.attributes());
-            if !hand_state {
-                let table = demo_input::arff_table(path)?;
-                let (data, warnings) = table
-                    .dataset(args.class.as_deref())
-                    .map_err(|e| demo_input::arff_failure(path, &e))?;
-                demo_input::warn(path, &warnings);
+        if segment::is_arff_file(path) {
+            let reader = learn::arff_reader(path).map_err(demo_input::file_failure)?;
+            if !segment::is_hand_state(reader.attributes()) {
+                let arff = |e| demo_input::arff_failure(path, &e);
+                let table = reader.into_table().map_err(arff)?;
+                let (data, warnings) = table.dataset(args.class.as_deref()).map_err(arff)?;
+                warnings.iter().for_each(|w| demo_input::warn(path, w));
                 return finish(args, &learner.learn_checked(&data));
             }
         }

@@ -1,24 +1,19 @@
-//! Shared by `segment`, `classify` and `timeline`: reading grounding configurations,
-//! trees and ARFF tables (errors with file, line and field, exit 31), and running
-//! grounding and segmentation over a recording.
+//! Shared by `segment`, `classify`, `timeline` and `learn`: reading grounding
+//! configurations, trees and label maps, and segmenting recordings and ARFF tables
+//! ([`learn`]'s files), with their errors rendered with file, line and field (exit 31).
 
-use std::fs::File;
-use std::io::BufReader;
 use std::path::{Path, PathBuf};
 
 use grounding::GroundingConfig;
 use learn::Segmented;
 use miette::NamedSource;
-use recording::{Activity, Header};
-use segment::{ActivityTree, ArffReader, DecisionTree, HandTable, LabelMap, LabelledFrame};
+use segment::{ActivityTree, DecisionTree, LabelMap};
 
+use crate::cli::SegmentationArgs;
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
 use crate::exit::ExitCode;
 use crate::input;
 use crate::recording_input;
-
-/// Frame rate assumed for ARFF tables without a time attribute.
-pub const ARFF_FRAME_RATE: f64 = 30.0;
 
 /// An input error (exit 31) at `line` (1-based; 0: none known) and `column` (1-based;
 /// 0: the whole line) of `text`, naming `field`.
@@ -133,11 +128,6 @@ fn tree_failure(path: &Path, text: &str, e: &segment::TreeError) -> Failure {
     )
 }
 
-/// Whether a path names an ARFF table ([`segment::is_arff_file`]: by extension or content).
-pub fn is_arff(path: &Path) -> bool {
-    segment::is_arff_file(path)
-}
-
 /// The label map: the defaults, with the `[labels]` table of the mapping file on top
 /// (`LABEL = "Activity"`). The mapping file is the import crate's, the one every command
 /// takes with `--mapping` (`docs/import.md`): a malformed file or an unknown key is an
@@ -169,25 +159,6 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
     })
 }
 
-/// An ARFF file opened for reading a row at a time: its header read and checked.
-pub fn arff_reader(path: &Path) -> Result<ArffReader<BufReader<File>>, Failure> {
-    let file = File::open(path).map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!("cannot read {}: {e}", path.display()),
-        )
-    })?;
-    ArffReader::new(BufReader::new(file)).map_err(|e| arff_failure(path, &e))
-}
-
-/// A whole ARFF table in memory, for what needs every row at once (C4.5 on a data set
-/// that is not a hand-state table).
-pub fn arff_table(path: &Path) -> Result<segment::ArffTable, Failure> {
-    arff_reader(path)?
-        .into_table()
-        .map_err(|e| arff_failure(path, &e))
-}
-
 /// The failure for an ARFF error, shown on its line of the file. The file is read again
 /// for that: tables are read a row at a time and no text is kept. A file that cannot be
 /// read again (or is not UTF-8 text) gets the message without its line shown.
@@ -215,47 +186,49 @@ pub fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
     }
 }
 
-/// An ARFF hand-state table after its first pass (objects, labels); its warnings are
-/// printed on standard error. [`arff_frames`] is the second pass.
-pub fn hand_table(path: &Path) -> Result<HandTable, Failure> {
-    let reader = arff_reader(path)?;
-    let (relation, attributes) = (reader.relation().to_string(), reader.attributes().to_vec());
-    let table = HandTable::scan(&relation, &attributes, reader, ARFF_FRAME_RATE)
-        .map_err(|e| arff_failure(path, &e))?;
-    warn(path, &table.warnings);
-    Ok(table)
+/// Prints a warning about what an ARFF reader accepted.
+pub fn warn(path: &Path, warning: &segment::ArffWarning) {
+    eprintln!(
+        "warning: {}:{}: {}",
+        path.display(),
+        warning.line,
+        warning.message
+    );
 }
 
-/// The second pass over a hand-state table: `each` sees every frame, in order.
-pub fn arff_frames(
-    path: &Path,
-    table: &HandTable,
-    mut each: impl FnMut(&LabelledFrame),
-) -> Result<(), Failure> {
-    for frame in table.frames(arff_reader(path)?) {
-        each(&frame.map_err(|e| arff_failure(path, &e))?);
-    }
-    Ok(())
-}
-
-/// An ARFF hand-state table segmented: its hand's own facts are the states (it has no
-/// geometry, so no grounding). The file is read twice, a row at a time.
-pub fn segment_arff(
-    path: &Path,
-    tree: &ActivityTree,
-    min_duration: f64,
-) -> Result<Segmented, Failure> {
-    let table = hand_table(path)?;
-    let segmented = table
-        .segments(table.frames(arff_reader(path)?), tree, min_duration)
-        .map_err(|e| arff_failure(path, &e))?;
-    Ok(Segmented::from_table(table.header, segmented))
-}
-
-/// Prints warnings about what an ARFF reader accepted.
-pub fn warn(path: &Path, warnings: &[segment::ArffWarning]) {
-    for w in warnings {
-        eprintln!("warning: {}:{}: {}", path.display(), w.line, w.message);
+/// The failure for a demonstration file that could not be read ([`learn::FileError`]).
+pub fn file_failure(e: learn::FileError) -> Failure {
+    use learn::FileError as E;
+    match e {
+        E::Read { path, source } => Failure::plain(
+            ExitCode::USAGE,
+            format!("cannot read {}: {source}", path.display()),
+        ),
+        E::Arff { path, error } => arff_failure(&path, &error),
+        E::Open { path, error } => recording_input::open_failure(&path, error),
+        E::Recording { path, error } => recording_input::recording_failure(&path, &error),
+        E::Truth {
+            truth,
+            recording,
+            line: 0,
+            message,
+        } => Failure::plain(
+            ExitCode::USAGE,
+            format!(
+                "cannot read {} (the ground truth of {}, needed for its labels): {message}",
+                truth.display(),
+                recording.display()
+            ),
+        ),
+        E::Truth {
+            truth,
+            line,
+            message,
+            ..
+        } => Failure::plain(
+            ExitCode::INPUT_ERROR,
+            format!("{}:{line}: {message}", truth.display()),
+        ),
     }
 }
 
@@ -273,18 +246,34 @@ pub fn recordings(paths: &[PathBuf]) -> Result<Vec<PathBuf>, Failure> {
     Ok(inputs.files)
 }
 
-/// A recording or an ARFF hand-state table (by [`is_arff`]) segmented; a table's states
+/// What [`SegmentationArgs`] name, read: how every recording of a command is segmented.
+#[derive(Debug)]
+pub struct Segmentation<'a> {
+    pub config: GroundingConfig,
+    pub tree: ActivityTree,
+    /// The `--mapping` file, for Unity logs and bags among the inputs.
+    pub mapping: Option<&'a Path>,
+}
+
+/// Reads the grounding configuration and the activity tree the options name.
+pub fn segmentation(args: &SegmentationArgs) -> Result<Segmentation<'_>, Failure> {
+    Ok(Segmentation {
+        config: config(args.config.as_deref())?,
+        tree: activity_tree(args.tree.as_deref())?,
+        mapping: args.import.mapping.as_deref(),
+    })
+}
+
+/// A recording or an ARFF hand-state table ([`segment::is_arff_file`]) segmented; a table's states
 /// hold the hand's own facts only (it has no geometry to ground).
-pub fn segment_file(
-    path: &Path,
-    mapping: Option<&Path>,
-    config: &GroundingConfig,
-    tree: &ActivityTree,
-) -> Result<Segmented, Failure> {
-    if is_arff(path) {
-        segment_arff(path, tree, config.min_duration)
+pub fn segment_file(path: &Path, with: &Segmentation) -> Result<Segmented, Failure> {
+    if segment::is_arff_file(path) {
+        learn::segment_arff(path, &with.tree, with.config.min_duration, &mut |w| {
+            warn(path, w)
+        })
+        .map_err(file_failure)
     } else {
-        segment_recording(path, mapping, config, tree, &mut ())
+        segment_recording(path, with.mapping, &with.config, &with.tree, &mut ())
     }
 }
 
@@ -300,39 +289,4 @@ pub fn segment_recording(
     let mut reader = recording_input::open(path, mapping)?;
     learn::segment_reader(&mut reader, config, tree, observer)
         .map_err(|e| recording_input::recording_failure(path, &e))
-}
-
-/// The ground truth beside a simulated recording (`NAME.truth.jsonl` for `NAME.jsonl`).
-pub fn truth_path(recording: &Path) -> PathBuf {
-    let name = recording
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let stem = name.strip_suffix(".jsonl").unwrap_or(&name);
-    recording.with_file_name(format!("{stem}.truth.jsonl"))
-}
-
-/// Reads the ground truth of a recording: per frame and hand, the activity.
-pub fn read_truth(recording: &Path, header: &Header) -> Result<Vec<Vec<Activity>>, Failure> {
-    let path = truth_path(recording);
-    let file = std::fs::File::open(&path).map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!(
-                "cannot read {} (the ground truth of {}, needed for its labels): {e}",
-                path.display(),
-                recording.display()
-            ),
-        )
-    })?;
-    let (_, frames) = simulate::read_truth(std::io::BufReader::new(file), header).map_err(|e| {
-        Failure::plain(
-            ExitCode::INPUT_ERROR,
-            format!("{}:{}: {}", path.display(), e.line, e.message),
-        )
-    })?;
-    Ok(frames
-        .iter()
-        .map(|f| f.hands.iter().map(|h| h.activity).collect())
-        .collect())
 }

@@ -3,7 +3,6 @@
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
 
 use crate::cli::ImportArgs;
 use crate::diagnostic::Failure;
@@ -16,50 +15,24 @@ use import::SourceKind;
 /// Sources this large show a progress bar on a terminal.
 const PROGRESS_FROM: u64 = 16 << 20;
 
+/// An import refused before anything was written: a source it cannot tell apart (its
+/// own failure), a native recording (31), two sources with one output name (36).
+fn plan_failure(e: import::PlanError) -> Failure {
+    match e {
+        import::PlanError::Open { path, error } => recording_input::open_failure(&path, error),
+        e @ import::PlanError::Native(_) => Failure::plain(ExitCode::INPUT_ERROR, e),
+        e @ import::PlanError::Clash { .. } => Failure::plain(ExitCode::USAGE, e),
+    }
+}
+
 pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     // Every output name first: a clash writes nothing.
-    let mut outputs: BTreeMap<PathBuf, &Path> = BTreeMap::new();
-    let mut plan = Vec::new();
-    for source in &args.sources {
-        let kind = recording_input::source_kind(source)?;
-        if kind == SourceKind::Native {
-            return Err(Failure::plain(
-                ExitCode::INPUT_ERROR,
-                format!(
-                    "{}: not a source import reads (a Unity playback log: a JSON object with \
-                     `playbackTimestepMilliseconds` and `log`; a ROS 1 bag, an MCAP file or a \
-                     ROS 2 bag folder)",
-                    source.display()
-                ),
-            ));
-        }
-        let stem = source
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        let out = args.out.join(format!("{stem}.jsonl"));
-        if let Some(other) = outputs.insert(out.clone(), source) {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "{} and {} would both be written to {}: import them into different \
-                     folders (nothing was written)",
-                    other.display(),
-                    source.display(),
-                    out.display()
-                ),
-            ));
-        }
-        plan.push((source, kind, stem, out));
-    }
+    let plan = import::plan_import(&args.sources, &args.out).map_err(plan_failure)?;
     // The mapping of each source format met (a file's keys over that format's defaults).
     let mut mappings: BTreeMap<&'static str, import::Mapping> = BTreeMap::new();
-    for (_, kind, _, _) in &plan {
-        let format = kind.format().unwrap_or(import::Format::Unity);
-        if !mappings.contains_key(format.name()) {
-            let mapping = recording_input::mapping(args.mapping.as_deref(), format)?;
-            mappings.insert(format.name(), mapping);
-        }
+    for format in import::formats(&plan) {
+        let mapping = recording_input::mapping(args.mapping.as_deref(), format)?;
+        mappings.insert(format.name(), mapping);
     }
     std::fs::create_dir_all(&args.out).map_err(|e| {
         Failure::plain(
@@ -69,43 +42,35 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     })?;
 
     let mut text = String::new();
-    for (source, kind, stem, out) in &plan {
+    for planned in &plan {
+        let (source, out) = (&planned.source, &planned.out);
+        let mapping = &mappings[planned.format().name()];
         // A folder's size is its MCAP files' (the bag knows them); a file's is its own.
-        let size = std::fs::metadata(source).map(|m| m.len()).unwrap_or(0);
-        let what = format!("importing {}", source.display());
-        let passes = import::SOURCE_PASSES;
-        let mut unity;
-        let mut bag;
-        let progress;
-        let (source_of_events, mapping): (&mut dyn import::Source, &import::Mapping) = match kind {
-            SourceKind::Bag(format) => {
-                let mapping = &mappings[format.name()];
-                let size = import::ros::bag_size(source).unwrap_or(size);
-                // Opening lists the topics (a read through an MCAP bag, the index of a
-                // ROS 1 bag); then each pass reads the whole bag.
-                progress = BytesBar::new(&what, (passes + 1) * size, size >= PROGRESS_FROM);
-                bag = import::ros::RosBag::open_counting(source, mapping, Some(progress.counter()))
-                    .map_err(|e| recording_input::import_failure(source, &e))?;
-                let opened = progress
-                    .counter()
-                    .load(std::sync::atomic::Ordering::Relaxed);
-                progress.set_total(opened + passes * size);
-                (&mut bag, mapping)
-            }
-            _ => {
-                progress = BytesBar::new(&what, passes * size, size >= PROGRESS_FROM);
-                let counter = progress.counter();
-                unity = import::unity::UnityLog::new(move || {
-                    let file = std::fs::File::open(source)?;
-                    Ok(import::CountingReader::new(file, counter.clone()))
-                });
-                (&mut unity, &mappings[import::Format::Unity.name()])
-            }
+        let size = match planned.kind {
+            SourceKind::Bag(_) => import::ros::bag_size(source).ok(),
+            _ => None,
         };
+        let size = size.unwrap_or_else(|| std::fs::metadata(source).map_or(0, |m| m.len()));
+        let passes = import::SOURCE_PASSES;
+        // Opening a bag lists its topics (a read through an MCAP bag, the index of a
+        // ROS 1 bag); then each pass reads the whole source.
+        let progress = BytesBar::new(
+            &format!("importing {}", source.display()),
+            (passes + 1) * size,
+            size >= PROGRESS_FROM,
+        );
+        let mut source_of_events = planned
+            .open(mapping, progress.counter())
+            .map_err(|e| recording_input::import_failure(source, &e))?;
+        let opened = progress
+            .counter()
+            .load(std::sync::atomic::Ordering::Relaxed);
+        progress.set_total(opened + passes * size);
+        let stem = &planned.stem;
         let mut failure = None;
         let mut result = None;
         let written = output::write_atomically_with(out, |w| {
-            match import::import(source_of_events, mapping, stem, w) {
+            match import::import(source_of_events.as_mut(), mapping, stem, w) {
                 Ok((_, header, report)) => {
                     result = Some((header, report));
                     Ok(())

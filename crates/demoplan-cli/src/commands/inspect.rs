@@ -14,7 +14,7 @@ pub fn run(args: InspectArgs) -> Result<ExitCode, Failure> {
         if i > 0 {
             out.push('\n');
         }
-        let mut reader = recording_input::open(path, args.mapping.as_deref())?;
+        let mut reader = recording_input::open(path, args.import.mapping.as_deref())?;
         let mut summary = Summary::new(reader.header());
         let mut frame = Frame::default();
         while reader

@@ -2,126 +2,115 @@
 
 use std::path::Path;
 
-pub use learn::{cards_markdown, cards_text, domain_text, summary_table};
 use learn::{
-    levels, operator_subset, per_type, Batch, DomainOptions, Library, Scene, Tower, TowerError,
+    cards_markdown, cards_text, domain_text, levels, levels_table, operator_subset, summary_table,
+    DomainOptions, Library, LibraryFileError, LockError, Scene, Tower, TowerError, Update,
+    UpdateError,
 };
 
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
-use crate::input;
-use crate::output::{remove_stale_temporaries, write_atomically, write_durably, WriteLock};
+use crate::output::write_atomically;
 
 /// Reads a library file: a missing file is a command line error (36), a damaged or newer
 /// one an input error (31) that names the line.
 pub fn read_library(path: &Path) -> Result<Library, Failure> {
-    let text = input::read_text(path)?;
-    Library::from_json(&text).map_err(|e| {
-        demo_input::text_failure(
-            path,
+    Library::read_file(path).map_err(read_failure)
+}
+
+fn read_failure(e: LibraryFileError) -> Failure {
+    match e {
+        LibraryFileError::Io { .. } => Failure::plain(ExitCode::USAGE, e),
+        LibraryFileError::NotText { .. } => Failure::plain(ExitCode::INPUT_ERROR, e),
+        LibraryFileError::Library { path, text, error } => demo_input::text_failure(
+            &path,
             &text,
             "learn::library",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
-    })
-}
-
-/// The content hash of a file ([`learn::content_hash`]).
-fn file_hash(path: &Path) -> Result<String, Failure> {
-    std::fs::File::open(path)
-        .and_then(learn::content_hash)
-        .map_err(|e| {
-            Failure::plain(
-                ExitCode::USAGE,
-                format!("cannot read {}: {e}", path.display()),
-            )
-        })
-}
-
-/// The lambda of `--lambda` and the grouping of `--activities` must be the library's.
-fn check_lambda(args: &LearnArgs, path: &Path, library: &Library) -> Result<(), Failure> {
-    let grouping = args.activities.map(ActivitiesArg::grouping);
-    if let Some(l) = args.lambda.filter(|&l| l != library.lambda) {
-        return Err(Failure::plain(
-            ExitCode::USAGE,
-            format!(
-                "--lambda {l} differs from the library's lambda {} ({}); costs of one \
-                 library use one lambda",
-                library.lambda,
-                path.display()
-            ),
-        ));
+            error.line,
+            error.column,
+            &error.field,
+            &error.message,
+        ),
     }
-    if let Some(g) = grouping.filter(|&g| g != library.grouping) {
-        return Err(Failure::plain(
-            ExitCode::USAGE,
-            format!(
-                "--activities {} differs from the library's `{}` activities ({}); one \
-                 library counts activities of one kind",
-                g.name(),
-                library.grouping.name(),
-                path.display()
-            ),
-        ));
-    }
-    Ok(())
 }
 
-/// Learning in two phases, so that concurrent learners of one library lose no counts and
-/// wait for each other only briefly: first the slow part, grounding and segmenting the
-/// recordings, without a lock; then, holding the output's [`WriteLock`], reading the
-/// library again, adding the recordings and writing it (durably, by a rename), so that
-/// the read and the write see no other writer in between (`docs/reliability.md`).
-pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
-    let lock_timeout = crate::commands::plan::parse_time_limit(&args.lock_timeout)
-        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))?;
-    // A first look at the library: its lambda, and the recordings it already counts
-    // (not segmented again). It is read again under the lock.
-    let before = match &args.library {
-        Some(path) => {
-            let library = read_library(path)?;
-            check_lambda(&args, path, &library)?;
-            Some(library)
+/// A library whose update wrote nothing: settings other than the library's are a
+/// command line error (36), a lock still held after `--lock-timeout`
+/// [`ExitCode::LOCKED`], a lock or library that cannot be written an I/O error (35).
+impl From<UpdateError> for Failure {
+    fn from(e: UpdateError) -> Failure {
+        match e {
+            UpdateError::Read(e) => read_failure(e),
+            e @ UpdateError::Hash { .. } => Failure::plain(ExitCode::USAGE, e),
+            UpdateError::Lambda {
+                path,
+                asked,
+                library,
+            } => differs(
+                format!("--lambda {asked}"),
+                format!("lambda {library}"),
+                &path,
+                "costs of one library use one lambda",
+            ),
+            UpdateError::Grouping {
+                path,
+                asked,
+                library,
+            } => differs(
+                format!("--activities {}", asked.name()),
+                format!("`{}` activities", library.name()),
+                &path,
+                "one library counts activities of one kind",
+            ),
+            UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
+                ExitCode::LOCKED,
+                format!(
+                    "{e}; try again later or with a longer --lock-timeout (a lock is held by \
+                     a running process only, and released when it ends)"
+                ),
+            ),
+            e @ (UpdateError::Lock(_) | UpdateError::Write(_)) => {
+                Failure::plain(ExitCode::CRITICAL_ERROR, e)
+            }
         }
-        None => None,
+    }
+}
+
+/// An option that differs from the library's setting: a command line error (36).
+fn differs(asked: String, library: String, path: &Path, why: &str) -> Failure {
+    Failure::plain(
+        ExitCode::USAGE,
+        format!(
+            "{asked} differs from the library's {library} ({}); {why}",
+            path.display()
+        ),
+    )
+}
+
+/// Learning in two phases around the library's lock ([`learn::Update`]), so that
+/// concurrent learners of one library lose no counts (`docs/reliability.md`).
+pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
+    let lock_timeout = task::units::parse_time_limit(&args.lock_timeout)
+        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--lock-timeout: {e}")))?;
+    let update = Update {
+        library: args.library.as_deref(),
+        out: &args.out,
+        lambda: args.lambda,
+        grouping: args.activities.map(ActivitiesArg::grouping),
+        lock_timeout,
     };
-    let config = demo_input::config(args.config.as_deref())?;
-    let tree = demo_input::activity_tree(args.tree.as_deref())?;
+    let before = update.read()?;
     // ARFF hand-state tables are segmented as they are (no geometry to ground); their
     // states hold the hand's own facts only (docs/operators.md).
-    let segment =
-        |path: &Path| demo_input::segment_file(path, args.mapping.as_deref(), &config, &tree);
+    let segmentation = demo_input::segmentation(&args.segmentation)?;
+    let segment = |path: &Path| demo_input::segment_file(path, &segmentation);
     let files = demo_input::recordings(&args.files)?;
-    let batch = Batch::prepare(&files, before.as_ref(), file_hash, segment)?;
-    drop(before);
-
-    // The lock and the write go to the library's canonical path: through a symlink or
-    // a relative name, one library is one file with one lock.
-    let lock = WriteLock::acquire(&args.out, lock_timeout)?;
-    remove_stale_temporaries(lock.target());
-    let mut library = match &args.library {
-        Some(path) => {
-            let library = read_library(path)?;
-            check_lambda(&args, path, &library)?;
-            library
-        }
-        None => Library::with_grouping(
-            args.lambda.unwrap_or(learn::DEFAULT_LAMBDA),
-            args.activities
-                .map(ActivitiesArg::grouping)
-                .unwrap_or_default(),
-        ),
-    };
-    let log = batch.add_to(&mut library, segment)?;
-    write_durably(lock.target(), &library.to_json())?;
-    drop(lock);
-    print!("{log}");
-    print!("{}", summary_table(&library));
+    let updated = update.run(before, &files, segment, |w| eprintln!("{w}"))?;
+    let library = &updated.library;
+    print!("{}", updated.log);
+    print!("{}", summary_table(library));
     println!(
         "wrote {} ({} operators from {} activities of {} recordings)",
         args.out.display(),
@@ -151,14 +140,7 @@ pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
     let all = levels(&library, options);
     let Some(out) = args.out else {
         // No output file: list the levels.
-        println!(
-            "{:>5} {:>9}  per type (reach, take, put, stack, idle)",
-            "prio", "operators"
-        );
-        for l in &all {
-            let counts = per_type(&l.operators);
-            println!("{:>5} {:>9}  {:?}", l.prio, l.operators.len(), counts);
-        }
+        print!("{}", levels_table(&all));
         return Ok(ExitCode::SUCCESS);
     };
     let (operators, what) = if args.full {

@@ -4,7 +4,7 @@
 
 use slim::FastDownward;
 
-use crate::cli::ReproduceArgs;
+use crate::cli::{FastDownwardArgs, ReproduceArgs};
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::exit::ExitCode;
@@ -23,22 +23,20 @@ pub fn experiment_failure(e: experiment::ExperimentError) -> Failure {
     Failure::plain(code, e.to_string())
 }
 
-/// A `--time-limit`: Fast Downward's units; `infinity` is no limit worth the name.
-pub fn time_limit(text: &str) -> Result<std::time::Duration, Failure> {
-    crate::commands::plan::parse_time_limit(text)
+/// A `--time-limit`: Fast Downward's units; `infinity` (or none) is no limit worth the
+/// name.
+pub fn time_limit(text: Option<&str>) -> Result<std::time::Duration, Failure> {
+    task::units::parse_time_limit(text.unwrap_or("infinity"))
         .map(|t| t.unwrap_or(std::time::Duration::from_secs(u64::from(u32::MAX))))
         .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))
 }
 
 /// Fast Downward when `--with-fd` asks for it.
-pub fn fast_downward(
-    with_fd: bool,
-    fd: Option<&std::path::Path>,
-) -> Result<Option<FastDownward>, Failure> {
-    if !with_fd {
+pub fn fast_downward(args: &FastDownwardArgs) -> Result<Option<FastDownward>, Failure> {
+    if !args.with_fd {
         return Ok(None);
     }
-    FastDownward::locate(fd)
+    FastDownward::locate(args.fd.as_deref())
         .map(Some)
         .map_err(|e| Failure::plain(ExitCode::USAGE, e))
 }
@@ -81,14 +79,14 @@ pub fn print_cell(
 
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let memory_limit = parse_run_memory_limit(&args.memory_limit, args.jobs as usize)?;
+    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, args.jobs as usize)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
-        time_limit: time_limit(&args.time_limit)?,
+        time_limit: time_limit(args.limits.time_limit.as_deref())?,
         repeat: args.repeat,
         goals: args.goals,
         prios: args.prios,
-        fast_downward: fast_downward(args.with_fd, args.fd.as_deref())?,
+        fast_downward: fast_downward(&args.fast_downward)?,
         seed: args.seed,
         hands: args.hands as usize,
         memory: Some(crate::memory::probe()),

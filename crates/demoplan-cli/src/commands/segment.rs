@@ -10,8 +10,7 @@ use crate::exit::ExitCode;
 use crate::output::{self, stdout_failure};
 
 pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
-    let config = demo_input::config(args.config.as_deref())?;
-    let tree = demo_input::activity_tree(args.tree.as_deref())?;
+    let segmentation = demo_input::segmentation(&args.segmentation)?;
     // Each file is printed as soon as it is segmented, and JSON one segment at a time:
     // memory follows one file's segments, not the text of all of them.
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
@@ -19,7 +18,7 @@ pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
         output::print(&mut out, "{\n  \"files\": [")?;
     }
     for (i, path) in args.files.iter().enumerate() {
-        let segmented = demo_input::segment_file(path, args.mapping.as_deref(), &config, &tree)?;
+        let segmented = demo_input::segment_file(path, &segmentation)?;
         let source = path.display().to_string();
         if args.json {
             output::print(&mut out, if i > 0 { ",\n" } else { "\n" })?;

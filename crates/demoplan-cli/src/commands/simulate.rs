@@ -12,18 +12,7 @@ use crate::input;
 use crate::output::{write_atomically, write_atomically_with};
 
 pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
-    let mut params = match &args.params {
-        None => simulate::SimParams::default(),
-        Some(path) => {
-            let text = input::read_text(path)?;
-            serde_json::from_str(&text).map_err(|e| {
-                Failure::plain(
-                    ExitCode::USAGE,
-                    format!("{}: not a parameter file: {e}", path.display()),
-                )
-            })?
-        }
-    };
+    let mut params = input::sim_params(args.params.as_deref())?;
     if let Some(c) = args.cubes {
         params.cubes = c;
     }
@@ -65,44 +54,25 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// Writes the recording and its ground truth; says what was written.
+/// Writes the recording and its ground truth, each atomically; says what was written.
 fn write_demonstration(
     demo: &simulate::Demonstration,
     path: &Path,
     truth_path: &Path,
 ) -> Result<simulate::Written, Failure> {
-    let mut truth = simulate::TruthWriter::new(Vec::new(), &demo.truth_header(), demo.header())
-        .map_err(|e| write_failure(truth_path, e))?;
-    let (mut frames, mut first, mut last) = (0u64, 0.0, 0.0);
+    // The truth is rendered beside the frames, so it is kept until the recording is in
+    // place; it is a small part of the recording's size.
+    let mut truth = Vec::new();
+    let mut written = None;
     write_atomically_with(path, |out| {
-        let mut writer =
-            recording::Writer::new(out, demo.header()).map_err(std::io::Error::other)?;
-        let mut frame = recording::Frame::default();
-        let mut t = simulate::TruthFrame::default();
-        let mut render = demo.frames();
-        while render.next_into(&mut frame, &mut t) {
-            writer.write_frame(&frame).map_err(std::io::Error::other)?;
-            truth.write(&t)?;
-            if frames == 0 {
-                first = frame.time;
-            }
-            last = frame.time;
-            frames += 1;
-        }
-        writer.finish().map_err(std::io::Error::other)?;
+        written = Some(demo.write(out, &mut truth)?);
         Ok(())
     })?;
-    let bytes = truth.finish().map_err(|e| write_failure(truth_path, e))?;
-    write_atomically_with(truth_path, |out| out.write_all(&bytes))?;
-    Ok(simulate::Written {
-        frames,
-        seconds: last - first,
+    write_atomically_with(truth_path, |out| out.write_all(&truth))?;
+    written.ok_or_else(|| {
+        Failure::plain(
+            ExitCode::CRITICAL_ERROR,
+            format!("cannot write {}", path.display()),
+        )
     })
-}
-
-fn write_failure(path: &Path, e: std::io::Error) -> Failure {
-    Failure::plain(
-        ExitCode::CRITICAL_ERROR,
-        format!("cannot write {}: {e}", path.display()),
-    )
 }

@@ -16,58 +16,19 @@ fn usage(option: &str, message: String) -> Failure {
     Failure::plain(ExitCode::USAGE, format!("{option}: {message}"))
 }
 
-/// `1-20` (inclusive), `7`, or `1,4,9` (each part a number or a range).
+/// A list option of numbers (`--seeds 1-20`, `--heights 2,4`), read by
+/// [`experiment::numbers`].
 fn numbers(option: &str, text: &str) -> Result<Vec<u64>, Failure> {
-    let mut out = Vec::new();
-    for part in text.split(',').map(str::trim) {
-        let number = |t: &str| {
-            t.trim().parse::<u64>().map_err(|_| {
-                usage(
-                    option,
-                    format!("{t:?} is not a number (give e.g. 1-20, 3 or 1,4,9)"),
-                )
-            })
-        };
-        match part.split_once('-') {
-            Some((a, b)) => {
-                let (a, b) = (number(a)?, number(b)?);
-                if a > b {
-                    return Err(usage(option, format!("the range {a}-{b} is empty")));
-                }
-                if b - a > 100_000 {
-                    return Err(usage(option, format!("the range {a}-{b} is too long")));
-                }
-                out.extend(a..=b);
-            }
-            None => out.push(number(part)?),
-        }
-    }
-    out.sort_unstable();
-    out.dedup();
-    Ok(out)
+    experiment::numbers(text).map_err(|e| usage(option, e))
 }
 
 fn sizes(option: &str, text: &str) -> Result<Vec<usize>, Failure> {
-    numbers(option, text)?
-        .into_iter()
-        .map(|n| usize::try_from(n).map_err(|_| usage(option, format!("{n} is too large"))))
-        .collect()
+    experiment::sizes(text).map_err(|e| usage(option, e))
 }
 
 pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let params = match &args.params {
-        None => simulate::SimParams::default(),
-        Some(path) => {
-            let text = input::read_text(path)?;
-            serde_json::from_str(&text).map_err(|e| {
-                usage(
-                    "--params",
-                    format!("{}: not a parameter file: {e}", path.display()),
-                )
-            })?
-        }
-    };
+    let params = input::sim_params(args.params.as_deref())?;
     let mut activities: Vec<String> = args
         .activities
         .split(',')
@@ -78,7 +39,7 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         Some(n) => n as usize,
         None => std::thread::available_parallelism().map_or(1, usize::from),
     };
-    let memory_limit = parse_run_memory_limit(&args.memory_limit, jobs)?;
+    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, jobs)?;
     let options = experiment::StudyOptions {
         out: args.out,
         seeds: numbers("--seeds", &args.seeds)?,
@@ -91,8 +52,8 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         activities,
         keep_without_effects: args.keep_without_effects,
         params,
-        time_limit: time_limit(&args.time_limit)?,
-        fast_downward: fast_downward(args.with_fd, args.fd.as_deref())?,
+        time_limit: time_limit(args.limits.time_limit.as_deref())?,
+        fast_downward: fast_downward(&args.fast_downward)?,
         memory: Some(crate::memory::probe()),
         memory_limit,
         children: None,
@@ -123,22 +84,4 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         return Ok(ExitCode::CHECK_FAILED);
     }
     Ok(ExitCode::SUCCESS)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn seeds_read_as_ranges_and_lists() {
-        assert_eq!(numbers("--seeds", "1-3").ok(), Some(vec![1, 2, 3]));
-        assert_eq!(numbers("--seeds", "5, 1,2-3").ok(), Some(vec![1, 2, 3, 5]));
-        for bad in ["3-1", "x", "1-", ""] {
-            let e = numbers("--seeds", bad).err().map(|f| (f.code, f.text));
-            assert!(
-                matches!(&e, Some((code, text)) if *code == ExitCode::USAGE && text.contains("--seeds")),
-                "{bad}: {e:?}"
-            );
-        }
-    }
 }

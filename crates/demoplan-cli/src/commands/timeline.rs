@@ -22,23 +22,28 @@ pub fn run(args: TimelineArgs) -> Result<ExitCode, Failure> {
             ),
         ));
     }
-    let config = demo_input::config(args.config.as_deref())?;
-    let tree = demo_input::activity_tree(args.tree.as_deref())?;
+    let segmentation = demo_input::segmentation(&args.segmentation)?;
     let mut signals = learn::Signals::default();
     let segmented = demo_input::segment_recording(
         &args.file,
-        args.mapping.as_deref(),
-        &config,
-        &tree,
+        segmentation.mapping,
+        &segmentation.config,
+        &segmentation.tree,
         &mut signals,
     )?;
-    let truth = if demo_input::truth_path(&args.file).is_file() {
-        Some(demo_input::read_truth(&args.file, &segmented.header)?)
+    let truth = if simulate::truth_path(&args.file).is_file() {
+        Some(learn::read_truth(&args.file, &segmented.header).map_err(demo_input::file_failure)?)
     } else {
         None
     };
     let source = args.file.display().to_string();
-    let timeline = learn::timeline(&segmented, &signals, truth.as_deref(), &config, &source);
+    let timeline = learn::timeline(
+        &segmented,
+        &signals,
+        truth.as_deref(),
+        &segmentation.config,
+        &source,
+    );
     write_atomically(&args.out, &report::timeline_figure(&timeline).svg())?;
     println!(
         "{}: {} frames, {} segments drawn to {}",

@@ -50,9 +50,33 @@ pub fn transcript(out: &Output) -> String {
 /// Runs `cmd` to its end; it must exit 0 (else the test fails with its transcript).
 #[track_caller]
 pub fn succeeds(cmd: &mut Command) -> Output {
+    exits(0, cmd)
+}
+
+/// Runs `cmd` to its end; it must exit `code` (else the test fails with its transcript).
+#[track_caller]
+pub fn exits(code: i32, cmd: &mut Command) -> Output {
     let out = cmd.output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    assert_eq!(out.status.code(), Some(code), "{}", transcript(&out));
     out
+}
+
+/// Runs `cmd` to its end; it must exit `code` and say `needle` on standard error.
+#[track_caller]
+pub fn exits_saying(code: i32, needle: &str, cmd: &mut Command) -> Output {
+    let out = exits(code, cmd);
+    assert!(stderr_text(&out).contains(needle), "{}", transcript(&out));
+    out
+}
+
+/// What a run printed on standard output, as text.
+pub fn stdout_text(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// What a run printed on standard error, as text.
+pub fn stderr_text(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
 }
 
 /// The number after `prefix` in a log (`Plan cost: N`).
@@ -61,4 +85,21 @@ pub fn logged_number(log: &str, prefix: &str) -> Option<u64> {
         .find_map(|l| l.strip_prefix(prefix))
         .and_then(|rest| rest.split_whitespace().next())
         .and_then(|n| n.parse().ok())
+}
+
+/// Simulates the paper's study into `dir`; its 12 recordings, sorted by name (the truth
+/// files beside them left out).
+pub fn simulated_study(dir: &Path) -> Vec<PathBuf> {
+    succeeds(demoplan().args(["simulate", "-o"]).arg(dir));
+    let mut recordings: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            name.ends_with(".jsonl") && !name.ends_with(".truth.jsonl")
+        })
+        .collect();
+    recordings.sort();
+    assert_eq!(recordings.len(), 12);
+    recordings
 }

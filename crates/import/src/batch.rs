@@ -1,0 +1,165 @@
+//! Importing several sources into one folder (`demoplan import`): every source's kind and
+//! output file are planned before anything is written, so that two sources with one
+//! output name are refused with nothing written; then each source is opened for its two
+//! passes, counting the bytes it reads (for a progress bar).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicU64;
+use std::sync::Arc;
+
+use crate::{CountingReader, Format, ImportError, Mapping, OpenError, Source, SourceKind};
+
+/// One source of an import, and where its recording goes.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Planned {
+    pub source: PathBuf,
+    pub kind: SourceKind,
+    /// The recording's id: the source's file stem.
+    pub stem: String,
+    /// `DIR/STEM.jsonl`.
+    pub out: PathBuf,
+}
+
+/// Why an import was refused before it wrote anything.
+#[derive(Debug, thiserror::Error)]
+pub enum PlanError {
+    /// A source that could not be told apart ([`SourceKind::of`]).
+    #[error("{error}")]
+    Open { path: PathBuf, error: OpenError },
+    /// A native recording, which needs no import.
+    #[error(
+        "{}: not a source import reads (a Unity playback log: a JSON object with \
+         `playbackTimestepMilliseconds` and `log`; a ROS 1 bag, an MCAP file or a ROS 2 \
+         bag folder)",
+        .0.display()
+    )]
+    Native(PathBuf),
+    /// Two sources whose recordings would have one name.
+    #[error(
+        "{} and {} would both be written to {}: import them into different folders \
+         (nothing was written)",
+        first.display(), second.display(), out.display()
+    )]
+    Clash {
+        first: PathBuf,
+        second: PathBuf,
+        out: PathBuf,
+    },
+}
+
+/// Plans the import of `sources` into the folder `dir`, in order, each to
+/// `DIR/STEM.jsonl`.
+pub fn plan_import(sources: &[PathBuf], dir: &Path) -> Result<Vec<Planned>, PlanError> {
+    let mut outputs: BTreeMap<PathBuf, &PathBuf> = BTreeMap::new();
+    let mut plan = Vec::new();
+    for source in sources {
+        let kind = SourceKind::of(source).map_err(|error| PlanError::Open {
+            path: source.clone(),
+            error,
+        })?;
+        if kind == SourceKind::Native {
+            return Err(PlanError::Native(source.clone()));
+        }
+        let stem = source
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let out = dir.join(format!("{stem}.jsonl"));
+        if let Some(first) = outputs.insert(out.clone(), source) {
+            return Err(PlanError::Clash {
+                first: first.clone(),
+                second: source.clone(),
+                out,
+            });
+        }
+        plan.push(Planned {
+            source: source.clone(),
+            kind,
+            stem,
+            out,
+        });
+    }
+    Ok(plan)
+}
+
+/// The formats of the planned sources, each once, by name (a mapping per format).
+pub fn formats(plan: &[Planned]) -> Vec<Format> {
+    let mut formats: Vec<Format> = plan.iter().map(Planned::format).collect();
+    formats.sort_by_key(|f| f.name());
+    formats.dedup();
+    formats
+}
+
+impl Planned {
+    /// The format whose mapping the source is imported with.
+    pub fn format(&self) -> Format {
+        self.kind.format().unwrap_or(Format::Unity)
+    }
+
+    /// Opens the source for its passes; every byte it reads, opening included (a bag's
+    /// index or topics), is counted in `bytes_read`.
+    pub fn open(
+        &self,
+        mapping: &Mapping,
+        bytes_read: Arc<AtomicU64>,
+    ) -> Result<Box<dyn Source>, ImportError> {
+        match self.kind {
+            SourceKind::Bag(_) => Ok(Box::new(crate::ros::RosBag::open_counting(
+                &self.source,
+                mapping,
+                Some(bytes_read),
+            )?)),
+            _ => {
+                let path = self.source.clone();
+                Ok(Box::new(crate::unity::UnityLog::new(move || {
+                    let file = std::fs::File::open(&path)?;
+                    Ok(CountingReader::new(file, bytes_read.clone()))
+                })))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("import-batch-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(dir.join("a")).unwrap();
+        std::fs::create_dir_all(dir.join("b")).unwrap();
+        dir
+    }
+
+    const UNITY: &str = r#"{"playbackTimestepMilliseconds": 10, "log": []}"#;
+
+    #[test]
+    fn sources_are_planned_to_their_stems_and_a_clash_is_refused() {
+        let dir = scratch("plan");
+        let (a, b) = (dir.join("a/take.json"), dir.join("b/take.json"));
+        std::fs::write(&a, UNITY).unwrap();
+        std::fs::write(&b, UNITY).unwrap();
+        let out = dir.join("out");
+        let plan = plan_import(std::slice::from_ref(&a), &out).unwrap();
+        assert_eq!(plan.len(), 1);
+        assert_eq!(plan[0].kind, SourceKind::Unity);
+        assert_eq!(
+            (plan[0].stem.as_str(), &plan[0].out),
+            ("take", &out.join("take.jsonl"))
+        );
+        assert_eq!(formats(&plan), vec![Format::Unity]);
+        match plan_import(&[a.clone(), b.clone()], &out) {
+            Err(PlanError::Clash { first, second, .. }) => assert_eq!((first, second), (a, b)),
+            other => panic!("expected a clash, got {other:?}"),
+        }
+        let native = dir.join("a/rec.jsonl");
+        std::fs::write(&native, "{\"format\":\"demoplan-recording\"}\n").unwrap();
+        assert!(matches!(
+            plan_import(&[native], &out),
+            Err(PlanError::Native(_))
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

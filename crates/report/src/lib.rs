@@ -33,6 +33,7 @@ mod draw;
 mod html;
 mod model;
 pub mod paper;
+mod planner;
 mod plots;
 mod render;
 mod timeline;
@@ -43,10 +44,10 @@ pub use html::{
     PAPER_OPERATORS, PAPER_TITLE, RATIO_ROW,
 };
 pub use model::{
-    domain_label, format_limit, format_seconds, planner_label, ratio, ratio_by, slimming_ratio,
-    slimming_ratio_by, time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome,
-    Ratio, Run, PLANNER_ORDER,
+    domain_label, format_limit, format_seconds, ratio, ratio_by, slimming_ratio, slimming_ratio_by,
+    time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome, Ratio, Run,
 };
+pub use planner::Planner;
 pub use plots::{
     decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,
     time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,

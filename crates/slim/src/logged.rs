@@ -161,7 +161,7 @@ fn outcome_line(outcome: &Outcome) -> &'static str {
         Outcome::TimeLimit => "Time limit reached. Abort search.",
         Outcome::MemoryLimit => "Memory limit has been reached.",
         Outcome::RelaxedUnreachable => "Search stopped without finding a solution.",
-        Outcome::Error(_) => "Search stopped with an error.",
+        Outcome::Error => "Search stopped with an error.",
     }
 }
 
@@ -257,7 +257,7 @@ impl LoggedRun {
                 Outcome::RelaxedUnreachable | Outcome::Unsolvable => "unsolvable",
                 Outcome::TimeLimit => "out_of_time",
                 Outcome::MemoryLimit => "out_of_memory",
-                Outcome::Error(_) => "error",
+                Outcome::Error => "error",
             },
             peak_memory_kb,
             plan_cost: self.run.cost,

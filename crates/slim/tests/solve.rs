@@ -26,7 +26,7 @@ fn widening_finds_the_plan_on_the_second_level() {
         &p,
         &backend,
         RunLimits::time(Duration::from_secs(60)),
-        |l| seen.push((l.prio, l.run.outcome.clone())),
+        |l| seen.push((l.prio, l.run.outcome)),
     );
     assert_eq!(
         seen,

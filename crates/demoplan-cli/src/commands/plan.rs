@@ -187,7 +187,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         slim::Outcome::TimeLimit => ExitCode::OUT_OF_TIME,
         slim::Outcome::MemoryLimit => ExitCode::OUT_OF_MEMORY,
         slim::Outcome::Unsolvable | slim::Outcome::RelaxedUnreachable => ExitCode::UNSOLVABLE,
-        slim::Outcome::Error(_) => ExitCode::CRITICAL_SEARCH_ERROR,
+        slim::Outcome::Error => ExitCode::CRITICAL_SEARCH_ERROR,
     })
 }
 

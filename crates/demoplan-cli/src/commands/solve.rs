@@ -80,7 +80,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
             run.expansions.map_or("-".to_string(), |e| e.to_string()),
             run.cost.map_or("-".to_string(), |c| c.to_string())
         );
-        if let Outcome::Error(e) = &run.outcome {
+        if let Some(e) = &run.error {
             eprintln!("error at priority {}: {e}", level.prio);
         }
     });

@@ -29,6 +29,13 @@
 //! # Ok::<(), report::RenderError>(())
 //! ```
 
+// The tests' shared helpers name this crate `report`, as the integration tests do.
+#[cfg(test)]
+extern crate self as report;
+#[cfg(test)]
+#[path = "../tests/common/mod.rs"]
+mod test_common;
+
 mod draw;
 mod html;
 mod model;

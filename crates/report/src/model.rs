@@ -413,21 +413,9 @@ mod tests {
         assert_eq!(format_seconds(f64::NAN), "-");
     }
 
+    /// LM-cut's run of goal 5 at `prio`.
     fn run(prio: usize, outcome: Outcome, t: f64) -> Run {
-        Run {
-            planner: Planner::Lmcut,
-            prio,
-            operators: prio * 5,
-            goal: 5,
-            outcome,
-            search_time: t,
-            total_time: t,
-            times: vec![t],
-            expansions: None,
-            cost: None,
-            length: None,
-            executed: None,
-        }
+        crate::test_common::run(Planner::Lmcut, prio, 5, outcome, t)
     }
 
     #[test]
@@ -456,19 +444,7 @@ mod tests {
             Some(Bound::AtLeast)
         );
         assert_eq!(ratio(&slow, &run(1, Outcome::Unsolvable, 1.0)), None);
-        let exp = Experiment {
-            runs: vec![slow, fast],
-            levels: vec![],
-            goals: vec![],
-            time_limit: 60.0,
-            repeat: 1,
-            seed: 7,
-            machine: String::new(),
-            versions: String::new(),
-            notes: vec![],
-            cubes: 0,
-            hands: 0,
-        };
+        let exp = crate::test_common::experiment(vec![slow, fast]);
         assert_eq!(
             slimming_ratio(&exp, Planner::Lmcut, 5).map(|r| r.bound),
             Some(Bound::AtLeast)

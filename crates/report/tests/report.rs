@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::check_markup;
+use common::{check_markup, experiment, run};
 use report::{
     goal_figure, goals_figure, operators_figure, report_html, search_time_figure,
     search_time_table, text_width, Experiment, Figure, Goal, Level, LogScale, Outcome, Planner,
@@ -177,38 +177,9 @@ fn the_page_links_every_artefact_and_shows_the_tables() {
     assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("<script"));
 }
 
-fn run(planner: Planner, prio: usize, goal: usize, outcome: Outcome, t: f64) -> Run {
-    Run {
-        planner,
-        prio,
-        operators: prio * 4,
-        goal,
-        outcome,
-        search_time: t,
-        total_time: t,
-        times: vec![t],
-        expansions: None,
-        cost: None,
-        length: None,
-        executed: None,
-    }
-}
-
 #[test]
 fn odd_inputs_draw_without_panicking() {
-    let empty = Experiment {
-        runs: vec![],
-        levels: vec![],
-        goals: vec![],
-        time_limit: 0.0,
-        repeat: 0,
-        seed: 0,
-        machine: String::new(),
-        versions: String::new(),
-        notes: vec![],
-        cubes: 0,
-        hands: 0,
-    };
+    let empty = experiment(vec![]);
     let mut odd = empty.clone();
     odd.time_limit = f64::NAN;
     odd.runs = vec![

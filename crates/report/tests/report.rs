@@ -6,7 +6,7 @@ use common::{check_markup, experiment, run};
 use report::{
     goal_figure, goals_figure, operators_figure, report_html, search_time_figure,
     search_time_table, text_width, Experiment, Figure, Goal, Level, LogScale, Outcome, Planner,
-    Run, Shape,
+    Shape,
 };
 
 fn figures(exp: &Experiment) -> Vec<(&'static str, Figure)> {

@@ -106,8 +106,9 @@ fn plan_texts(
     let statistics = serde_json::to_string(&record)
         .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string()))?;
     let outcome = match &logged.run.outcome {
-        slim::Outcome::Error(reason) => {
-            return Err(Failure::plain(ExitCode::CRITICAL_SEARCH_ERROR, reason))
+        slim::Outcome::Error => {
+            let reason = logged.run.error.clone().unwrap_or_default();
+            return Err(Failure::plain(ExitCode::CRITICAL_SEARCH_ERROR, reason));
         }
         other => other.word().to_string(),
     };

@@ -4,72 +4,19 @@ use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
 
-/// Who plans, with which heuristic.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub enum Planner {
-    /// demoplan's `astar(ipdb())`.
-    #[serde(rename = "ipdb")]
-    Ipdb,
-    /// demoplan's `astar(lmcut())`.
-    #[serde(rename = "lmcut")]
-    Lmcut,
-    /// Fast Downward's `astar(ipdb())`.
-    #[serde(rename = "fd-ipdb")]
-    FdIpdb,
-    /// Fast Downward's `astar(lmcut())`.
-    #[serde(rename = "fd-lmcut")]
-    FdLmcut,
-}
+/// Who plans, with which heuristic: the report crate's type, the lowest crate that shows
+/// planners, re-exported as `experiment::Planner`.
+pub use report::Planner;
 
-impl Planner {
-    /// demoplan's two planners, the paper's Table 3 (iPDB) first.
-    pub const DEMOPLAN: [Planner; 2] = [Planner::Ipdb, Planner::Lmcut];
-
-    /// The name in results: `ipdb`, `lmcut`, `fd-ipdb`, `fd-lmcut`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Planner::Ipdb => "ipdb",
-            Planner::Lmcut => "lmcut",
-            Planner::FdIpdb => "fd-ipdb",
-            Planner::FdLmcut => "fd-lmcut",
-        }
-    }
-
-    /// The planner of a results name.
-    pub fn from_name(name: &str) -> Option<Planner> {
-        [
-            Planner::Ipdb,
-            Planner::Lmcut,
-            Planner::FdIpdb,
-            Planner::FdLmcut,
-        ]
-        .into_iter()
-        .find(|p| p.name() == name)
-    }
-
-    /// Whether Fast Downward plans.
-    pub fn is_fast_downward(self) -> bool {
-        matches!(self, Planner::FdIpdb | Planner::FdLmcut)
-    }
-
-    /// The same heuristic with Fast Downward.
-    pub fn with_fast_downward(self) -> Planner {
-        match self {
-            Planner::Ipdb | Planner::FdIpdb => Planner::FdIpdb,
-            Planner::Lmcut | Planner::FdLmcut => Planner::FdLmcut,
-        }
-    }
-
-    /// The search string. The paper ran Fast Downward's `ipdb()`, whose hill climbing
-    /// has no time limit of its own; demoplan's default gives the climb half of a run's
-    /// time (see the search crate's ipdb module), so demoplan's iPDB here may climb for
-    /// the whole run, as Fast Downward's does.
-    pub fn search_string(self, time_limit: Duration) -> String {
-        match self {
-            Planner::Ipdb => format!("astar(ipdb(max_time={}))", time_limit.as_secs().max(1)),
-            Planner::Lmcut | Planner::FdLmcut => "astar(lmcut())".to_string(),
-            Planner::FdIpdb => "astar(ipdb())".to_string(),
-        }
+/// The search string of a planner's run under `time_limit`. The paper ran Fast
+/// Downward's `ipdb()`, whose hill climbing has no time limit of its own; demoplan's
+/// default gives the climb half of a run's time (see the search crate's ipdb module),
+/// so demoplan's iPDB here may climb for the whole run, as Fast Downward's does.
+pub fn search_string(planner: Planner, time_limit: Duration) -> String {
+    match planner {
+        Planner::Ipdb => format!("astar(ipdb(max_time={}))", time_limit.as_secs().max(1)),
+        Planner::Lmcut | Planner::FdLmcut => "astar(lmcut())".to_string(),
+        Planner::FdIpdb => "astar(ipdb())".to_string(),
     }
 }
 
@@ -319,14 +266,6 @@ mod tests {
             assert_eq!(LevelChoice::from_name(&l.name()), Some(l));
         }
         assert_eq!(LevelChoice::from_name("prio-0"), None);
-        for p in [
-            Planner::Ipdb,
-            Planner::Lmcut,
-            Planner::FdIpdb,
-            Planner::FdLmcut,
-        ] {
-            assert_eq!(Planner::from_name(p.name()), Some(p));
-        }
     }
 
     #[test]

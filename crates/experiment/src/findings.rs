@@ -1,7 +1,7 @@
 //! The findings text: what a set of results says about slimming, written from the
 //! records alone (so a results file gives the same text on any machine).
 
-use report::{format_seconds, paper, planner_label, Measure, Ratio, PLANNER_ORDER};
+use report::{format_seconds, Measure, Planner, Ratio};
 
 use crate::cell::LevelChoice;
 use crate::ratio::ratio;
@@ -46,8 +46,8 @@ pub fn findings(records: &[RunRecord]) -> Vec<String> {
     let Some(height) = records.iter().map(|r| r.conditions.height).max() else {
         return notes;
     };
-    let mut planners: Vec<&str> = records.iter().map(|r| r.planner.as_str()).collect();
-    planners.sort_by_key(|p| PLANNER_ORDER.iter().position(|o| o == p).unwrap_or(9));
+    let mut planners: Vec<Planner> = records.iter().map(|r| r.planner).collect();
+    planners.sort_unstable();
     planners.dedup();
     for planner in planners {
         let of = |pick: &dyn Fn(&RunRecord) -> bool| -> Option<&RunRecord> {
@@ -71,12 +71,8 @@ pub fn findings(records: &[RunRecord]) -> Vec<String> {
         let full = largest.and_then(|p| of(&|r| domain_levels(r) && r.prio == p));
         let p1 = of(&|r| r.level_choice() == Some(LevelChoice::Prio(1)));
         let alg1 = of(&|r| r.level_choice() == Some(LevelChoice::Algorithm1));
-        let label = planner_label(planner);
-        let paper_ratio = if planner.ends_with("ipdb") {
-            paper::RATIO_IPDB
-        } else {
-            paper::RATIO_LMCUT
-        };
+        let label = planner.label();
+        let paper_ratio = planner.paper_ratio();
         let Some(full) = full else { continue };
         let mut text = format!(
             "{label}, towers of {height} cubes: the largest domain (priority {}, {} \

@@ -163,14 +163,14 @@ impl Planners {
         let mut times = Times::default();
         let mut peak: Option<u64> = None;
         let mut outcome = if all.is_empty() {
-            "error"
+            Outcome::Error
         } else {
-            "unsolvable"
+            Outcome::Unsolvable
         };
         for (i, level) in all.iter().enumerate() {
             let left = budget - times.total_s;
             if left <= 0.0 {
-                outcome = "limit";
+                outcome = Outcome::TimeLimit;
                 break;
             }
             let domain = learn::domain("demoplan", &level.operators);
@@ -189,7 +189,7 @@ impl Planners {
                         .then(|| sibling(LevelChoice::Full))
                         .flatten()
                 })
-                .filter(|r| r.outcome != "error");
+                .filter(|r| r.outcome != Outcome::Error);
             let mut step = match reused {
                 Some(r) => r.clone(),
                 None => {
@@ -199,7 +199,7 @@ impl Planners {
                     let run = backend.plan(&domain, problem, &limits);
                     let mut step = record.clone();
                     step.times = Times::of(&run);
-                    step.outcome = run.outcome.word().to_string();
+                    step.outcome = run.outcome;
                     fill(&mut step, &run, &domain, problem, false);
                     step
                 }
@@ -207,14 +207,14 @@ impl Planners {
             // A level run that outlasted what is left would have been stopped there.
             if step.times.total_s > left {
                 step.times = step.times.truncated(left);
-                step.outcome = "limit".to_string();
+                step.outcome = Outcome::TimeLimit;
             }
             times.add(&step.times);
             peak = peak.max(step.peak_memory_kb);
             record.widening.push(WideningStep {
                 prio: level.prio,
                 operators: level.operators.len(),
-                outcome: step.outcome.clone(),
+                outcome: step.outcome,
                 times: step.times,
             });
             record.prio = level.prio;
@@ -222,21 +222,21 @@ impl Planners {
             record.expansions = step.expansions;
             record.generated = step.generated;
             record.error = step.error.clone();
-            outcome = match step.outcome.as_str() {
-                "solved" => {
+            match step.outcome {
+                Outcome::Solved => {
                     record.cost = step.cost;
                     record.length = step.length;
                     record.plan = step.plan;
                     record.unit_cost = step.unit_cost;
                     record.executed = step.executed;
-                    "solved"
                 }
-                // A level out of memory ends the widening as one out of time does.
-                "limit" => "limit",
-                "memory" => "memory",
-                "error" => "error",
-                _ => continue,
-            };
+                // A level out of memory ends the widening as one out of time does; so
+                // does a cancelled one (the lab sets no cancel flag today).
+                Outcome::TimeLimit | Outcome::MemoryLimit | Outcome::Cancelled | Outcome::Error => {
+                }
+                Outcome::RelaxedUnreachable | Outcome::Unsolvable => continue,
+            }
+            outcome = step.outcome;
             break;
         }
         if all.is_empty() {
@@ -244,12 +244,12 @@ impl Planners {
         }
         record.times = times;
         record.peak_memory_kb = peak;
-        record.outcome = outcome.to_string();
+        record.outcome = outcome;
         Ok(())
     }
 
     fn backend(&self, planner: Planner, limit: Duration) -> Result<Backend, ExperimentError> {
-        let search = planner.search_string(limit);
+        let search = crate::cell::search_string(planner, limit);
         if planner.is_fast_downward() {
             let fd = self
                 .fast_downward
@@ -276,9 +276,9 @@ fn fill(
     with_outcome: bool,
 ) {
     if with_outcome {
-        record.outcome = run.outcome.word().to_string();
+        record.outcome = run.outcome;
     }
-    if let Outcome::Error(e) = &run.outcome {
+    if let Some(e) = &run.error {
         record.error = Some(e.clone());
     }
     record.expansions = run.expansions;
@@ -386,7 +386,7 @@ mod tests {
         let alone = lab
             .run(&cell(LevelChoice::Algorithm1, 1), &Known::new())
             .unwrap();
-        assert_eq!((alone.outcome.as_str(), alone.prio), ("solved", 1));
+        assert_eq!((alone.outcome, alone.prio), (Outcome::Solved, 1));
         assert_eq!(alone.plan, p1.plan);
         // With priority 1's cell known, it takes that run, times and all.
         let mut known = Known::new();
@@ -395,7 +395,7 @@ mod tests {
         slow.times.total_s = 8.0;
         known.insert(slow.id.clone(), slow.clone());
         let reused = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
-        assert_eq!(reused.outcome, "solved");
+        assert_eq!(reused.outcome, Outcome::Solved);
         assert_eq!(reused.times, slow.times);
         assert_eq!(reused.widening.len(), 1);
         assert_eq!(reused.widening[0].times, slow.times);
@@ -419,7 +419,7 @@ mod tests {
         slow.times.total_s = 30.0;
         known.insert(slow.id.clone(), slow);
         let cut = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
-        assert_eq!(cut.outcome, "limit");
+        assert_eq!(cut.outcome, Outcome::TimeLimit);
         assert_eq!(cut.times.total_s, 20.0);
         assert_eq!(
             (
@@ -438,7 +438,7 @@ mod tests {
         // first check.
         let mut lab = lab_with_limit(Some(1));
         let full = lab.run(&cell(LevelChoice::Full, 1), &Known::new()).unwrap();
-        assert_eq!(full.outcome, "memory", "{full:?}");
+        assert_eq!(full.outcome, Outcome::MemoryLimit, "{full:?}");
         assert!(full.hit_limit() && !full.solved());
         assert!(full.plan.is_empty() && full.cost.is_none() && full.error.is_none());
         let line = full.to_json_line();
@@ -447,9 +447,9 @@ mod tests {
         let alg1 = lab
             .run(&cell(LevelChoice::Algorithm1, 1), &Known::new())
             .unwrap();
-        assert_eq!(alg1.outcome, "memory", "{alg1:?}");
+        assert_eq!(alg1.outcome, Outcome::MemoryLimit, "{alg1:?}");
         assert_eq!(alg1.widening.len(), 1);
-        assert_eq!(alg1.widening[0].outcome, "memory");
+        assert_eq!(alg1.widening[0].outcome, Outcome::MemoryLimit);
         // The same lab without the limit plans the same cell.
         let mut unlimited = lab_with_limit(None);
         let solved = unlimited
@@ -469,7 +469,7 @@ mod tests {
         let mut known = Known::new();
         known.insert(p1.id(), RunRecord::failed(&p1, "crashed".into()));
         let alg1 = lab.run(&cell(LevelChoice::Algorithm1, 1), &known).unwrap();
-        assert_eq!(alg1.outcome, "solved", "{alg1:?}");
+        assert_eq!(alg1.outcome, Outcome::Solved, "{alg1:?}");
         assert!(alg1.error.is_none());
     }
 }

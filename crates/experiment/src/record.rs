@@ -7,6 +7,8 @@ use std::path::Path;
 use report::{Bound, Measure};
 use serde::{Deserialize, Serialize};
 
+use slim::Outcome;
+
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::ExperimentError;
 
@@ -69,8 +71,7 @@ impl Times {
 pub struct WideningStep {
     pub prio: usize,
     pub operators: usize,
-    /// [`slim::Outcome::word`].
-    pub outcome: String,
+    pub outcome: Outcome,
     pub times: Times,
 }
 
@@ -82,8 +83,7 @@ pub struct RunRecord {
     pub conditions: Conditions,
     /// [`LevelChoice::name`]: `prio-N`, `full`, `alg1`.
     pub level: String,
-    /// [`Planner::name`].
-    pub planner: String,
+    pub planner: Planner,
     pub time_limit_s: f64,
     pub repeat: u32,
     /// The priority planned on: the level's, the full domain's, or for Algorithm 1 the
@@ -91,9 +91,9 @@ pub struct RunRecord {
     pub prio: usize,
     /// Operators in that domain.
     pub operators: usize,
-    /// [`slim::Outcome::word`]: `solved`, `relaxed-unreachable`, `unsolvable`, `limit`,
-    /// `memory`, `error`.
-    pub outcome: String,
+    /// Written as [`Outcome::word`]: `solved`, `relaxed-unreachable`, `unsolvable`,
+    /// `limit`, `memory`, `error`.
+    pub outcome: Outcome,
     /// For Algorithm 1 the cumulative times over every level tried.
     pub times: Times,
     pub expansions: Option<u64>,
@@ -119,18 +119,19 @@ pub struct RunRecord {
 }
 
 impl RunRecord {
-    /// `cell`'s record before its run: no outcome, no times, nothing found.
+    /// `cell`'s record before its run: no times, nothing found, and the outcome
+    /// [`Outcome::Error`] until the run gives its own.
     pub fn blank(cell: &Cell) -> RunRecord {
         RunRecord {
             id: cell.id(),
             conditions: cell.conditions.clone(),
             level: cell.level.name(),
-            planner: cell.planner.name().to_string(),
+            planner: cell.planner,
             time_limit_s: cell.time_limit.as_secs_f64(),
             repeat: cell.repeat,
             prio: 0,
             operators: 0,
-            outcome: String::new(),
+            outcome: Outcome::Error,
             times: Times::default(),
             expansions: None,
             generated: None,
@@ -149,7 +150,7 @@ impl RunRecord {
     /// outcome `error`, with why.
     pub fn failed(cell: &Cell, message: String) -> RunRecord {
         RunRecord {
-            outcome: "error".to_string(),
+            outcome: Outcome::Error,
             error: Some(message),
             ..RunRecord::blank(cell)
         }
@@ -157,12 +158,12 @@ impl RunRecord {
 
     /// Whether a plan was found.
     pub fn solved(&self) -> bool {
-        self.outcome == "solved"
+        self.outcome == Outcome::Solved
     }
 
     /// Whether the run stopped at its time or memory limit: its times are lower bounds.
     pub fn hit_limit(&self) -> bool {
-        self.outcome == "limit" || self.outcome == "memory"
+        self.outcome.hit_limit()
     }
 
     /// The time by `measure` and whether it is exact or a lower bound (the run hit its
@@ -192,11 +193,6 @@ impl RunRecord {
     /// The level, parsed.
     pub fn level_choice(&self) -> Option<LevelChoice> {
         LevelChoice::from_name(&self.level)
-    }
-
-    /// The planner, parsed.
-    pub fn planner_choice(&self) -> Option<Planner> {
-        Planner::from_name(&self.planner)
     }
 
     /// Whether this record is `cell`'s.
@@ -320,12 +316,12 @@ mod tests {
             id: id.to_string(),
             conditions: Conditions::paper_goal(7, 1, 1),
             level: "prio-1".into(),
-            planner: "lmcut".into(),
+            planner: Planner::Lmcut,
             time_limit_s: 20.0,
             repeat: 0,
             prio: 1,
             operators: 5,
-            outcome: "solved".into(),
+            outcome: Outcome::Solved,
             times: Times {
                 translate_s: 0.01,
                 heuristic_s: 0.002,
@@ -371,10 +367,54 @@ mod tests {
     }
 
     #[test]
+    fn outcomes_and_planners_are_written_as_their_words() {
+        let mut r = record("a");
+        r.outcome = Outcome::MemoryLimit;
+        r.planner = Planner::FdIpdb;
+        let line = r.to_json_line();
+        assert!(line.contains(r#""planner":"fd-ipdb""#), "{line}");
+        assert!(line.contains(r#""outcome":"memory""#), "{line}");
+        assert_eq!(
+            parse_records(&format!("{line}\n"), Path::new("r")).ok(),
+            Some(vec![r])
+        );
+    }
+
+    #[test]
+    fn an_unknown_outcome_or_planner_is_an_error_naming_the_file_line_and_field() {
+        let good = record("a").to_json_line();
+        for (from, to, says) in [
+            (
+                r#""outcome":"solved""#,
+                r#""outcome":"won""#,
+                "outcome `won` is none of solved, relaxed-unreachable, unsolvable, limit, \
+                 memory, error",
+            ),
+            (
+                r#""planner":"lmcut""#,
+                r#""planner":"lm-cut""#,
+                "planner `lm-cut` is none of ipdb, lmcut, fd-ipdb, fd-lmcut",
+            ),
+        ] {
+            assert!(good.contains(from), "{good}");
+            let text = format!("{good}\n{}\n", good.replace(from, to));
+            let e = parse_records(&text, Path::new("out/results.jsonl"))
+                .err()
+                .map(|e| e.to_string())
+                .unwrap_or_default();
+            assert!(
+                e.starts_with("out/results.jsonl:2: not a result record: "),
+                "{e}"
+            );
+            assert!(e.contains(says), "{e}");
+        }
+    }
+
+    #[test]
     fn a_limit_run_gives_a_lower_bound() {
         let mut r = record("a");
         assert_eq!(r.time(Measure::Total), Some((0.015, Bound::Exact)));
-        r.outcome = "limit".into();
+        r.outcome = Outcome::TimeLimit;
         assert_eq!(r.time(Measure::Search), Some((0.003, Bound::AtLeast)));
         // Stopped in the hill climbing: the search never began.
         r.expansions = Some(0);
@@ -385,7 +425,7 @@ mod tests {
         r.times.search_s = 0.0;
         assert_eq!(r.time(Measure::Search), None);
         assert_eq!(r.time(Measure::Total), Some((0.015, Bound::AtLeast)));
-        r.outcome = "unsolvable".into();
+        r.outcome = Outcome::Unsolvable;
         assert_eq!(r.time(Measure::Search), None);
     }
 }

@@ -8,8 +8,8 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use learn::{levels, per_type, DomainOptions};
-use report::{planner_label, Measure};
-use slim::{FastDownward, MemoryProbe};
+use report::Measure;
+use slim::{FastDownward, MemoryProbe, Outcome};
 
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
@@ -281,7 +281,7 @@ pub fn reproduce(
     let mut artefacts: Vec<(String, String)> = Vec::new();
     for planner in experiment.planners() {
         for measure in Measure::ALL {
-            let figure = report::time_figure(&experiment, &planner, measure);
+            let figure = report::time_figure(&experiment, planner, measure);
             let base = format!("figures/{}-time-{planner}", measure.name());
             write_text(&out.join(format!("{base}.svg")), &figure.svg())?;
             write_png(&out.join(format!("{base}.png")), &figure)?;
@@ -290,7 +290,7 @@ pub fn reproduce(
                 format!(
                     "{} per goal and domain, {} (as the paper's Figures 5 and 6)",
                     measure.title(),
-                    planner_label(&planner)
+                    planner.label()
                 ),
             ));
         }
@@ -371,12 +371,15 @@ fn ground_actions(
     )]
 }
 
+/// How a run shows in the report: "unsolvable" whether relaxed reachability or the
+/// search proved it, "> limit" for either limit.
 fn report_outcome(r: &RunRecord) -> report::Outcome {
-    match r.outcome.as_str() {
-        "solved" => report::Outcome::Solved,
-        "relaxed-unreachable" | "unsolvable" => report::Outcome::Unsolvable,
-        "limit" | "memory" => report::Outcome::Limit,
-        _ => report::Outcome::Error,
+    match r.outcome {
+        Outcome::Solved => report::Outcome::Solved,
+        Outcome::RelaxedUnreachable | Outcome::Unsolvable => report::Outcome::Unsolvable,
+        Outcome::TimeLimit | Outcome::MemoryLimit => report::Outcome::Limit,
+        // A run cancelled before its end has no result, as one that failed.
+        Outcome::Cancelled | Outcome::Error => report::Outcome::Error,
     }
 }
 
@@ -389,10 +392,10 @@ fn experiment(
     options: &ReproduceOptions,
     notes: &[String],
 ) -> report::Experiment {
-    let mut keys: Vec<(String, usize, usize)> = records
+    let mut keys: Vec<(Planner, usize, usize)> = records
         .iter()
         .filter(|r| matches!(r.level_choice(), Some(LevelChoice::Prio(_))))
-        .map(|r| (r.planner.clone(), r.prio, goal(r)))
+        .map(|r| (r.planner, r.prio, goal(r)))
         .collect();
     keys.dedup();
     let runs = keys
@@ -401,7 +404,7 @@ fn experiment(
             let group: Vec<&RunRecord> = records
                 .iter()
                 .filter(|r| {
-                    &r.planner == planner
+                    r.planner == *planner
                         && r.prio == *prio
                         && goal(r) == *g
                         && matches!(r.level_choice(), Some(LevelChoice::Prio(_)))
@@ -409,7 +412,7 @@ fn experiment(
                 .collect();
             let m = median_record(&group)?;
             Some(report::Run {
-                planner: planner.clone(),
+                planner: *planner,
                 prio: *prio,
                 operators: m.operators,
                 goal: *g,
@@ -460,13 +463,13 @@ fn experiment(
     }
 }
 
-fn table_title(planner: &str) -> String {
+fn table_title(planner: Planner) -> String {
     match planner {
-        "ipdb" => "Table 3: A* with iPDB (demoplan)".to_string(),
-        "lmcut" => "Table 4: A* with LM-cut (demoplan)".to_string(),
-        "fd-ipdb" => "Fast Downward astar(ipdb()), beside Table 3".to_string(),
-        "fd-lmcut" => "Fast Downward astar(lmcut()), beside Table 4".to_string(),
-        other => other.to_string(),
+        Planner::Ipdb => "Table 3: A* with iPDB (demoplan)".to_string(),
+        Planner::Lmcut => "Table 4: A* with LM-cut (demoplan)".to_string(),
+        Planner::FdIpdb | Planner::FdLmcut => {
+            format!("{}, beside {}", planner.label(), planner.paper_table())
+        }
     }
 }
 
@@ -498,10 +501,10 @@ fn tables_markdown(
             let _ = writeln!(
                 s,
                 "## {}, {}\n",
-                table_title(&planner),
+                table_title(planner),
                 measure.title().to_lowercase()
             );
-            s.push_str(&report::time_table(exp, &planner, measure).to_markdown());
+            s.push_str(&report::time_table(exp, planner, measure).to_markdown());
             s.push('\n');
         }
     }
@@ -525,7 +528,7 @@ fn tables_markdown(
         let _ = writeln!(
             s,
             "| {} | {level} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            planner_label(&r.planner),
+            r.planner.label(),
             r.operators,
             r.outcome,
             report::format_seconds(r.times.translate_s),
@@ -576,7 +579,7 @@ fn tables_markdown(
             let _ = writeln!(
                 s,
                 "| {} | {g} | {} | {} | {} | {} |",
-                planner_label(&planner),
+                planner.label(),
                 cell(p1, Measure::Search),
                 cell(p1, Measure::Total),
                 cell(alg1, Measure::Search),
@@ -596,7 +599,7 @@ fn tables_markdown(
         let mut row = format!("| priority {prio} |");
         for g in exp.goal_numbers() {
             let cost = exp
-                .run("lmcut", prio, g)
+                .run(Planner::Lmcut, prio, g)
                 .and_then(|r| r.cost)
                 .map_or("-".to_string(), |c| c.to_string());
             let _ = write!(row, " {cost} |");

@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use report::{html_escape, planner_label, Bound, Measure, Ratio};
+use report::{html_escape, Bound, Measure, Ratio};
 use slim::{FastDownward, MemoryProbe};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
@@ -311,7 +311,7 @@ impl Which {
 /// One row of `ratios.csv`.
 struct RatioRow {
     conditions: Conditions,
-    planner: String,
+    planner: Planner,
     measure: Measure,
     which: Which,
     /// Seeds with no ratio (no plan on a level, or both at the limit).
@@ -322,19 +322,21 @@ struct RatioRow {
 /// Per condition (without the seed), planner, measure and ratio: the quartiles over
 /// seeds.
 fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
-    // (conditions without seed, planner) -> seed -> level -> record
+    // (conditions without seed, planner's name, planner) -> seed -> level -> record; by
+    // the planner's name, the order ratios.csv has always had.
     type Levels<'a> = BTreeMap<String, &'a RunRecord>;
-    let mut groups: BTreeMap<(Conditions, String), BTreeMap<u64, Levels<'_>>> = BTreeMap::new();
+    type Key = (Conditions, &'static str, Planner);
+    let mut groups: BTreeMap<Key, BTreeMap<u64, Levels<'_>>> = BTreeMap::new();
     for r in records {
         groups
-            .entry((r.conditions.without_seed(), r.planner.clone()))
+            .entry((r.conditions.without_seed(), r.planner.name(), r.planner))
             .or_default()
             .entry(r.conditions.seed)
             .or_default()
             .insert(r.level.clone(), r);
     }
     let mut rows = Vec::new();
-    for ((conditions, planner), seeds) in &groups {
+    for ((conditions, _, planner), seeds) in &groups {
         for measure in Measure::ALL {
             for which in [Which::P1, Which::Alg1] {
                 let mut values = Vec::new();
@@ -354,7 +356,7 @@ fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
                 }
                 rows.push(RatioRow {
                     conditions: conditions.clone(),
-                    planner: planner.clone(),
+                    planner: *planner,
                     measure,
                     which,
                     missing,
@@ -395,13 +397,8 @@ fn ratios_csv(rows: &[RatioRow]) -> String {
 /// every record of a height (all seeds and other conditions pooled). A run at the limit
 /// counts as a lower bound; runs with no plan in their domain are left out.
 fn scaling_panels(records: &[RunRecord], measure: Measure) -> Vec<report::ScalingPanel> {
-    let mut planners: Vec<&str> = records.iter().map(|r| r.planner.as_str()).collect();
-    planners.sort_by_key(|p| {
-        report::PLANNER_ORDER
-            .iter()
-            .position(|o| o == p)
-            .unwrap_or(9)
-    });
+    let mut planners: Vec<Planner> = records.iter().map(|r| r.planner).collect();
+    planners.sort_unstable();
     planners.dedup();
     let mut heights: Vec<usize> = records.iter().map(|r| r.conditions.height).collect();
     heights.sort_unstable();
@@ -445,7 +442,7 @@ fn scaling_panels(records: &[RunRecord], measure: Measure) -> Vec<report::Scalin
             })
             .collect();
             report::ScalingPanel {
-                title: planner_label(planner),
+                title: planner.label().to_string(),
                 series,
             }
         })
@@ -534,7 +531,7 @@ fn report_page(
             c.distractors,
             html_escape(&c.activities),
             if c.keep_without_effects { "kept" } else { "dropped" },
-            html_escape(&planner_label(&row.planner)),
+            html_escape(row.planner.label()),
             row.measure.name(),
             row.which.name(),
             q.n + row.missing,
@@ -587,9 +584,9 @@ fn report_page(
                 c.height,
                 c.towers,
                 c.distractors,
-                html_escape(&planner_label(&r.planner)),
+                html_escape(r.planner.label()),
                 html_escape(&tried.join("; ")),
-                html_escape(&r.outcome),
+                r.outcome,
                 report::format_seconds(r.times.search_s),
                 report::format_seconds(r.times.total_s)
             );

@@ -98,8 +98,6 @@ const POW10_F64: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// A scanned JSON number: its text range, and for plain decimals (no exponent, at most 19
-/// digits) the digits as an integer and the number of digits after the point.
 /// The float types numbers are read as, with the fast path: a decimal `m / 10^k` whose
 /// mantissa and power of ten are both exact in the type is correctly rounded by one
 /// division.
@@ -123,38 +121,50 @@ trait ExactDecimal: Copy + 'static + std::str::FromStr {
     }
 }
 
-impl ExactDecimal for f32 {
-    const MAX_EXACT: u64 = 1 << 24;
-    const POW10: &'static [f32] = &POW10_F32;
-    fn quotient(negative: bool, m: u64, p: f32) -> f32 {
-        let v = m as f32 / p;
-        if negative {
-            -v
-        } else {
-            v
+/// The two impls differ only in their type, exactness bound and powers of ten.
+macro_rules! exact_decimal {
+    ($float:ty, $max_exact:expr, $pow10:expr) => {
+        impl ExactDecimal for $float {
+            const MAX_EXACT: u64 = $max_exact;
+            const POW10: &'static [$float] = &$pow10;
+            fn quotient(negative: bool, m: u64, p: $float) -> $float {
+                let v = m as $float / p;
+                if negative {
+                    -v
+                } else {
+                    v
+                }
+            }
+            fn is_finite(self) -> bool {
+                <$float>::is_finite(self)
+            }
         }
-    }
-    fn is_finite(self) -> bool {
-        f32::is_finite(self)
-    }
+    };
 }
 
-impl ExactDecimal for f64 {
-    const MAX_EXACT: u64 = 1 << 53;
-    const POW10: &'static [f64] = &POW10_F64;
-    fn quotient(negative: bool, m: u64, p: f64) -> f64 {
-        let v = m as f64 / p;
-        if negative {
-            -v
-        } else {
-            v
+exact_decimal!(f32, 1 << 24, POW10_F32);
+exact_decimal!(f64, 1 << 53, POW10_F64);
+
+/// Reads the ASCII digits of `b` from `j` on into `mantissa` (wrapping: callers take
+/// the fast path only for at most 19 digits, counted in `digits`); returns the index
+/// after them.
+#[inline]
+fn scan_digits(b: &[u8], mut j: usize, mantissa: &mut u64, digits: &mut usize) -> usize {
+    while let Some(&c) = b.get(j) {
+        if !c.is_ascii_digit() {
+            break;
         }
+        *mantissa = mantissa
+            .wrapping_mul(10)
+            .wrapping_add(u64::from(c.saturating_sub(b'0')));
+        *digits = digits.saturating_add(1);
+        j = j.saturating_add(1);
     }
-    fn is_finite(self) -> bool {
-        f64::is_finite(self)
-    }
+    j
 }
 
+/// A scanned JSON number: its text range, and for plain decimals (no exponent, at most 19
+/// digits) the digits as an integer and the number of digits after the point.
 struct Number {
     start: usize,
     end: usize,
@@ -253,6 +263,25 @@ impl<'a> Cursor<'a> {
         } else {
             Err(self.unexpected(field, expected))
         }
+    }
+
+    /// An object or array opened by `open` (else an error expecting `expected`): whether
+    /// it is empty, its `close` consumed too (white space after `open` skipped).
+    #[inline]
+    fn open(
+        &mut self,
+        open: u8,
+        close: u8,
+        field: Field<'_>,
+        expected: &str,
+    ) -> Result<bool, LineError> {
+        self.expect(open, field, expected)?;
+        self.ws();
+        let empty = self.peek() == Some(close);
+        if empty {
+            self.i = self.i.saturating_add(1);
+        }
+        Ok(empty)
     }
 
     /// After a member or element: `,` (returns true) or the closing byte (returns false).
@@ -364,16 +393,7 @@ impl<'a> Cursor<'a> {
         let mut mantissa: u64 = 0;
         let mut digits = 0usize;
         let int_start = j;
-        while let Some(&c) = b.get(j) {
-            if !c.is_ascii_digit() {
-                break;
-            }
-            mantissa = mantissa
-                .wrapping_mul(10)
-                .wrapping_add(u64::from(c.saturating_sub(b'0')));
-            digits = digits.saturating_add(1);
-            j = j.saturating_add(1);
-        }
+        j = scan_digits(b, j, &mut mantissa, &mut digits);
         if b[int_start] == b'0' && j.saturating_sub(int_start) > 1 {
             return Err(error(
                 start,
@@ -386,16 +406,7 @@ impl<'a> Cursor<'a> {
         if b.get(j) == Some(&b'.') {
             j = j.saturating_add(1);
             let frac_start = j;
-            while let Some(&c) = b.get(j) {
-                if !c.is_ascii_digit() {
-                    break;
-                }
-                mantissa = mantissa
-                    .wrapping_mul(10)
-                    .wrapping_add(u64::from(c.saturating_sub(b'0')));
-                digits = digits.saturating_add(1);
-                j = j.saturating_add(1);
-            }
+            j = scan_digits(b, j, &mut mantissa, &mut digits);
             fraction_digits = j.saturating_sub(frac_start);
             if fraction_digits == 0 {
                 return Err(self.bad_number(start, j, field));
@@ -462,15 +473,8 @@ impl<'a> Cursor<'a> {
         let negative = b.get(j) == Some(&b'-');
         j = j.saturating_add(usize::from(negative));
         let int_start = j;
-        let mut m: u64 = 0;
-        while let Some(&c) = b.get(j) {
-            let d = c.wrapping_sub(b'0');
-            if d > 9 {
-                break;
-            }
-            m = m.wrapping_mul(10).wrapping_add(u64::from(d));
-            j = j.saturating_add(1);
-        }
+        let (mut m, mut digits) = (0u64, 0usize);
+        j = scan_digits(b, j, &mut m, &mut digits);
         let int_digits = j.saturating_sub(int_start);
         if int_digits == 0 || (int_digits > 1 && b[int_start] == b'0') {
             return None;
@@ -479,20 +483,13 @@ impl<'a> Cursor<'a> {
         if b.get(j) == Some(&b'.') {
             j = j.saturating_add(1);
             let frac_start = j;
-            while let Some(&c) = b.get(j) {
-                let d = c.wrapping_sub(b'0');
-                if d > 9 {
-                    break;
-                }
-                m = m.wrapping_mul(10).wrapping_add(u64::from(d));
-                j = j.saturating_add(1);
-            }
+            j = scan_digits(b, j, &mut m, &mut digits);
             fraction = j.saturating_sub(frac_start);
             if fraction == 0 {
                 return None;
             }
         }
-        if int_digits.saturating_add(fraction) > 19 || matches!(b.get(j), Some(b'e' | b'E')) {
+        if digits > 19 || matches!(b.get(j), Some(b'e' | b'E')) {
             return None;
         }
         Some((negative, m, fraction, j))
@@ -790,10 +787,7 @@ impl FrameParser {
     }
 
     fn entities<'a>(&self, c: &mut Cursor<'a>, frame: &mut Frame) -> Result<(), LineError> {
-        c.expect(b'{', Field::Entities, "`{`")?;
-        c.ws();
-        if c.peek() == Some(b'}') {
-            c.i = c.i.saturating_add(1);
+        if c.open(b'{', b'}', Field::Entities, "`{`")? {
             return Ok(());
         }
         let mut hint = 0usize;
@@ -838,13 +832,10 @@ impl FrameParser {
 
     fn state(&self, c: &mut Cursor<'_>, id: usize, name: &[u8]) -> Result<EntityState, LineError> {
         let open = c.i;
-        c.expect(b'{', Field::Entity(name), "`{`")?;
-        c.ws();
+        let empty = c.open(b'{', b'}', Field::Entity(name), "`{`")?;
         let kind = self.kinds[id];
         let mut parts = Parts::default();
-        if c.peek() == Some(b'}') {
-            c.i = c.i.saturating_add(1);
-        } else {
+        if !empty {
             loop {
                 let key_at = c.i;
                 let member = match c.known_member() {
@@ -1030,10 +1021,7 @@ impl FrameParser {
     }
 
     fn contacts<'a>(&self, c: &mut Cursor<'a>, frame: &mut Frame) -> Result<(), LineError> {
-        c.expect(b'[', Field::Contacts, "`[`")?;
-        c.ws();
-        if c.peek() == Some(b']') {
-            c.i = c.i.saturating_add(1);
+        if c.open(b'[', b']', Field::Contacts, "`[`")? {
             return Ok(());
         }
         let mut i = 0usize;

@@ -512,88 +512,38 @@ mod tests {
 
     #[test]
     fn errors_name_line_and_field() {
-        let cases: &[(&str, &str, &str)] = &[
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,NaN,1],"rot":[0,0,0,1],"grip":0.5}}}"#,
-                "entities.h.pos[1]",
-                "not-finite",
-            ),
-            (
-                r#"{"t":0,"entities":{"x":{}}}"#,
-                "entities.x",
-                "unknown-entity",
-            ),
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":1.5}}}"#,
-                "entities.h.grip",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1]}}}"#,
-                "entities.h",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,2],"grip":0}}}"#,
-                "entities.h.rot",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"table":{}}}"#,
-                "entities.table",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"c":{"pos":[0,0],"rot":[0,0,0,1]}}}"#,
-                "entities.c.pos",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0}}}"#,
-                "entities.c.grip",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"h"}}}"#,
-                "entities.h.holding",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"q"}}}"#,
-                "entities.h.holding",
-                "unknown-entity",
-            ),
-            (
-                r#"{"t":0,"contacts":[["c","c"]]}"#,
-                "contacts[0]",
-                "invalid",
-            ),
-            (
-                r#"{"t":0,"contacts":[["c","z"]]}"#,
-                "contacts[0][1]",
-                "unknown-entity",
-            ),
-            (
-                r#"{"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1]}"#,
-                "entities",
-                "truncated",
-            ),
-            (
-                r#"{"t":0,"entities":{"c":{"pos":[0,0,1"#,
-                "entities.c.pos",
-                "truncated",
-            ),
-            (r#"{"t":0,"velocity":1}"#, "velocity", "invalid"),
-            (r#"{"entities":{}}"#, "t", "invalid"),
-            (r#"{"t":0} x"#, "", "syntax"),
-            ("{\"t\":1}\n{\"t\":1}", "t", "time"),
-            ("{\"t\":1}\n{\"t\":Infinity}", "t", "not-finite"),
-        ];
-        for (frames, field, code) in cases {
-            let e = error_of(frames);
+        // A case a line: the error's code, its field (`-`: none) and the frames, `\n`
+        // between two.
+        let cases = r#"
+not-finite      entities.h.pos[1]   {"t":0,"entities":{"h":{"pos":[0,NaN,1],"rot":[0,0,0,1],"grip":0.5}}}
+unknown-entity  entities.x          {"t":0,"entities":{"x":{}}}
+invalid         entities.h.grip     {"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":1.5}}}
+invalid         entities.h          {"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1]}}}
+invalid         entities.h.rot      {"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,2],"grip":0}}}
+invalid         entities.table      {"t":0,"entities":{"table":{}}}
+invalid         entities.c.pos      {"t":0,"entities":{"c":{"pos":[0,0],"rot":[0,0,0,1]}}}
+invalid         entities.c.grip     {"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0}}}
+invalid         entities.h.holding  {"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"h"}}}
+unknown-entity  entities.h.holding  {"t":0,"entities":{"h":{"pos":[0,0,1],"rot":[0,0,0,1],"grip":0,"holding":"q"}}}
+invalid         contacts[0]         {"t":0,"contacts":[["c","c"]]}
+unknown-entity  contacts[0][1]      {"t":0,"contacts":[["c","z"]]}
+truncated       entities            {"t":0,"entities":{"c":{"pos":[0,0,1],"rot":[0,0,0,1]}
+truncated       entities.c.pos      {"t":0,"entities":{"c":{"pos":[0,0,1
+invalid         velocity            {"t":0,"velocity":1}
+invalid         t                   {"entities":{}}
+syntax          -                   {"t":0} x
+time            t                   {"t":1}\n{"t":1}
+not-finite      t                   {"t":1}\n{"t":Infinity}
+"#;
+        for case in cases.lines().filter(|l| !l.is_empty()) {
+            let (code, rest) = case.split_once(' ').unwrap();
+            let (field, frames) = rest.trim_start().split_once(' ').unwrap();
+            let field = if field == "-" { "" } else { field };
+            let frames = frames.trim_start().replace("\\n", "\n");
+            let e = error_of(&frames);
             assert_eq!(
                 (e.field.as_str(), e.kind.code()),
-                (*field, *code),
+                (field, code),
                 "{frames}: {e}"
             );
             assert!(e.line >= 2, "{frames}: {e}");

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use report::{
     goal_figure, goals_figure, operators_figure, report_html, search_time_figure,
-    search_time_table, Experiment, Figure,
+    search_time_table, Experiment, Figure, Planner,
 };
 
 fn write(dir: &Path, name: &str, bytes: &[u8]) -> std::io::Result<()> {
@@ -55,7 +55,7 @@ fn run(dir: &Path) -> std::io::Result<()> {
             &mut artefacts,
         )?;
     }
-    for (planner, paper) in [("ipdb", "Figure 5"), ("lmcut", "Figure 6")] {
+    for (planner, paper) in [(Planner::Ipdb, "Figure 5"), (Planner::Lmcut, "Figure 6")] {
         figure(
             dir,
             &format!("search-time-{planner}"),
@@ -67,7 +67,7 @@ fn run(dir: &Path) -> std::io::Result<()> {
     let mut tables = String::new();
     for planner in exp.planners() {
         tables.push_str(&format!("## {planner}\n\n"));
-        tables.push_str(&search_time_table(&exp, &planner).to_markdown());
+        tables.push_str(&search_time_table(&exp, planner).to_markdown());
         tables.push('\n');
     }
     write(dir, "tables.md", tables.as_bytes())?;

@@ -3,10 +3,11 @@
 use std::fmt::Write as _;
 
 use crate::model::{
-    domain_label, format_limit, format_seconds, planner_label, slimming_ratio_by, time_cell_by,
-    Experiment, Measure, Outcome, Run,
+    domain_label, format_limit, format_seconds, slimming_ratio_by, time_cell_by, Experiment,
+    Measure, Outcome, Run,
 };
 pub use crate::paper::{PAPER_IPDB, PAPER_LMCUT, PAPER_OPERATORS, PAPER_TITLE};
+use crate::Planner;
 
 /// A plain table of texts: a header row and body rows of the same width.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -45,12 +46,12 @@ pub const RATIO_ROW: &str = "largest / smallest";
 /// (columns), as the paper's Tables 3 and 4: seconds, `> limit`, `unsolvable`,
 /// `error`, or `-` for a run that is missing. A last row gives the ratio of the largest
 /// domain over the smallest per goal (`>= 30x` when the largest hit the limit).
-pub fn search_time_table(exp: &Experiment, planner: &str) -> Table {
+pub fn search_time_table(exp: &Experiment, planner: Planner) -> Table {
     time_table(exp, planner, Measure::Search)
 }
 
 /// [`search_time_table`] by any [`Measure`].
-pub fn time_table(exp: &Experiment, planner: &str, measure: Measure) -> Table {
+pub fn time_table(exp: &Experiment, planner: Planner, measure: Measure) -> Table {
     let goals = exp.goal_numbers();
     let mut header = vec!["domain".to_string()];
     header.extend(goals.iter().map(|g| format!("Goal {g}")));
@@ -148,18 +149,7 @@ fn cell_class(run: &Run) -> &'static str {
     }
 }
 
-/// The paper's table number for a planner's heuristic.
-fn paper_table_of(planner: &str) -> Option<(&'static str, &'static [[&'static str; 5]; 5])> {
-    if planner.ends_with("ipdb") {
-        Some(("Table 3", &PAPER_IPDB))
-    } else if planner.ends_with("lmcut") {
-        Some(("Table 4", &PAPER_LMCUT))
-    } else {
-        None
-    }
-}
-
-fn times_table(s: &mut String, exp: &Experiment, planner: &str, measure: Measure) {
+fn times_table(s: &mut String, exp: &Experiment, planner: Planner, measure: Measure) {
     let goals = exp.goal_numbers();
     let domains = exp.domains();
     s.push_str("<table class=\"times\">\n<thead><tr><th>domain</th>");
@@ -305,7 +295,11 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
          domain is 72 times (iPDB) and 120 times (LM-cut) slower than the priority-1 domain, \
          and the priority-1 domain suffices for every goal.</p>\n",
     );
-    let planners: Vec<String> = exp.planners().iter().map(|p| planner_label(p)).collect();
+    let planners: Vec<String> = exp
+        .planners()
+        .iter()
+        .map(|p| p.label().to_string())
+        .collect();
     let repeats = if exp.repeat > 1 {
         format!("{} times each; the tables show medians", exp.repeat)
     } else {
@@ -413,16 +407,13 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
         if exp.repeat > 1 { " (median)" } else { "" }
     );
     for planner in exp.planners() {
-        let as_paper = paper_table_of(&planner)
-            .map(|(t, _)| format!(" (as the paper's {t})"))
-            .unwrap_or_default();
         let _ = writeln!(
             s,
-            "<h3>{}{}</h3>",
-            html_escape(&planner_label(&planner)),
-            as_paper
+            "<h3>{} (as the paper's {})</h3>",
+            html_escape(planner.label()),
+            planner.paper_table()
         );
-        times_table(&mut s, exp, &planner, Measure::Search);
+        times_table(&mut s, exp, planner, Measure::Search);
     }
     if !exp.runs.is_empty() {
         s.push_str("<h2>Total time</h2>\n");
@@ -432,8 +423,8 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
              user waits for. The last row is the same ratio on this measure.</p>\n",
         );
         for planner in exp.planners() {
-            let _ = writeln!(s, "<h3>{}</h3>", html_escape(&planner_label(&planner)));
-            times_table(&mut s, exp, &planner, Measure::Total);
+            let _ = writeln!(s, "<h3>{}</h3>", html_escape(planner.label()));
+            times_table(&mut s, exp, planner, Measure::Total);
         }
     }
     if exp.runs.is_empty() {
@@ -498,14 +489,7 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
              <th>cost</th><th>length</th><th>executed</th><th>every run (s)</th></tr></thead>\n<tbody>\n",
         );
         let mut runs: Vec<&Run> = exp.runs.iter().collect();
-        let planners = exp.planners();
-        runs.sort_by_key(|r| {
-            (
-                planners.iter().position(|p| *p == r.planner),
-                r.prio,
-                r.goal,
-            )
-        });
+        runs.sort_by_key(|r| (r.planner, r.prio, r.goal));
         let opt = |v: Option<String>| v.unwrap_or_else(|| "-".to_string());
         for r in runs {
             let times: Vec<String> = r.times.iter().map(|t| format_seconds(*t)).collect();
@@ -514,7 +498,7 @@ pub fn report_html(exp: &Experiment, artefacts: &[(String, String)]) -> String {
                 "<tr><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"{}\">{}</td>\
                  <td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td>\
                  <td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td class=\"num\">{}</td></tr>",
-                html_escape(&r.planner),
+                r.planner,
                 domain_label(r.prio, r.operators),
                 r.goal,
                 cell_class(r),

@@ -29,10 +29,18 @@
 //! # Ok::<(), report::RenderError>(())
 //! ```
 
+// The tests' shared helpers name this crate `report`, as the integration tests do.
+#[cfg(test)]
+extern crate self as report;
+#[cfg(test)]
+#[path = "../tests/common/mod.rs"]
+mod test_common;
+
 mod draw;
 mod html;
 mod model;
 pub mod paper;
+mod planner;
 mod plots;
 mod render;
 mod timeline;
@@ -43,10 +51,10 @@ pub use html::{
     PAPER_OPERATORS, PAPER_TITLE, RATIO_ROW,
 };
 pub use model::{
-    domain_label, format_limit, format_seconds, planner_label, ratio, ratio_by, slimming_ratio,
-    slimming_ratio_by, time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome,
-    Ratio, Run, PLANNER_ORDER,
+    domain_label, format_limit, format_seconds, ratio, ratio_by, slimming_ratio, slimming_ratio_by,
+    time_cell, time_cell_by, Bound, Experiment, Goal, Level, Measure, Outcome, Ratio, Run,
 };
+pub use planner::Planner;
 pub use plots::{
     decade_label, goal_figure, goals_figure, operators_figure, scaling_figure, search_time_figure,
     time_figure, LogScale, ScalingPanel, ScalingPoint, ScalingSeries,

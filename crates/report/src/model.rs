@@ -4,15 +4,12 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The planners in the order the report shows them: the paper's Table 3 (iPDB) before
-/// Table 4 (LM-cut), demoplan's own planner before Fast Downward.
-pub const PLANNER_ORDER: [&str; 4] = ["ipdb", "lmcut", "fd-ipdb", "fd-lmcut"];
+use crate::Planner;
 
 /// One planner run: one planner on one domain and one goal (medians over repeats).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Run {
-    /// `"lmcut"`, `"ipdb"`, `"fd-lmcut"` or `"fd-ipdb"`.
-    pub planner: String,
+    pub planner: Planner,
     /// The domain's priority level.
     pub prio: usize,
     /// Operators in that domain.
@@ -130,26 +127,18 @@ pub struct Experiment {
 
 impl Experiment {
     /// The run of `planner` on level `prio` for goal `goal` (the first, if several).
-    pub fn run(&self, planner: &str, prio: usize, goal: usize) -> Option<&Run> {
+    pub fn run(&self, planner: Planner, prio: usize, goal: usize) -> Option<&Run> {
         self.runs
             .iter()
             .find(|r| r.planner == planner && r.prio == prio && r.goal == goal)
     }
 
-    /// The planners that have runs, in [`PLANNER_ORDER`], then any others sorted.
-    pub fn planners(&self) -> Vec<String> {
-        let mut names: Vec<String> = self.runs.iter().map(|r| r.planner.clone()).collect();
-        names.sort_by_key(|n| {
-            (
-                PLANNER_ORDER
-                    .iter()
-                    .position(|p| p == n)
-                    .unwrap_or(PLANNER_ORDER.len()),
-                n.clone(),
-            )
-        });
-        names.dedup();
-        names
+    /// The planners that have runs, in the report's order ([`Planner::ALL`]).
+    pub fn planners(&self) -> Vec<Planner> {
+        let mut planners: Vec<Planner> = self.runs.iter().map(|r| r.planner).collect();
+        planners.sort_unstable();
+        planners.dedup();
+        planners
     }
 
     /// `(prio, operators)` of every level, from `levels` and from the runs, sorted by
@@ -208,8 +197,8 @@ impl Experiment {
         let limit = 60.0;
         let mut runs = Vec::new();
         for (planner, table) in [
-            ("ipdb", &crate::html::PAPER_IPDB),
-            ("lmcut", &crate::html::PAPER_LMCUT),
+            (Planner::Ipdb, &crate::html::PAPER_IPDB),
+            (Planner::Lmcut, &crate::html::PAPER_LMCUT),
         ] {
             for (d, level) in levels.iter().enumerate() {
                 for (g, text) in table[d].iter().enumerate() {
@@ -222,7 +211,7 @@ impl Experiment {
                     };
                     let length = 4 * (g + 1);
                     runs.push(Run {
-                        planner: planner.to_string(),
+                        planner,
                         prio: level.prio,
                         operators: level.operators,
                         goal: g + 1,
@@ -258,18 +247,6 @@ impl Experiment {
             cubes: 6,
             hands: 1,
         }
-    }
-}
-
-/// A planner's name for people: `"lmcut"` is `"demoplan astar(lmcut())"`,
-/// `"fd-ipdb"` is `"Fast Downward astar(ipdb())"`; other names are returned as given.
-pub fn planner_label(planner: &str) -> String {
-    match planner {
-        "lmcut" => "demoplan astar(lmcut())".to_string(),
-        "ipdb" => "demoplan astar(ipdb())".to_string(),
-        "fd-lmcut" => "Fast Downward astar(lmcut())".to_string(),
-        "fd-ipdb" => "Fast Downward astar(ipdb())".to_string(),
-        other => other.to_string(),
     }
 }
 
@@ -396,14 +373,14 @@ pub fn ratio_by(slow: &Run, fast: &Run, measure: Measure) -> Option<Ratio> {
 
 /// For `planner` and `goal`: the search-time ratio of the largest domain (highest
 /// priority level with a run) over the smallest (lowest).
-pub fn slimming_ratio(exp: &Experiment, planner: &str, goal: usize) -> Option<Ratio> {
+pub fn slimming_ratio(exp: &Experiment, planner: Planner, goal: usize) -> Option<Ratio> {
     slimming_ratio_by(exp, planner, goal, Measure::Search)
 }
 
 /// [`slimming_ratio`] by any [`Measure`].
 pub fn slimming_ratio_by(
     exp: &Experiment,
-    planner: &str,
+    planner: Planner,
     goal: usize,
     measure: Measure,
 ) -> Option<Ratio> {
@@ -436,21 +413,9 @@ mod tests {
         assert_eq!(format_seconds(f64::NAN), "-");
     }
 
+    /// LM-cut's run of goal 5 at `prio`.
     fn run(prio: usize, outcome: Outcome, t: f64) -> Run {
-        Run {
-            planner: "lmcut".into(),
-            prio,
-            operators: prio * 5,
-            goal: 5,
-            outcome,
-            search_time: t,
-            total_time: t,
-            times: vec![t],
-            expansions: None,
-            cost: None,
-            length: None,
-            executed: None,
-        }
+        crate::test_common::run(Planner::Lmcut, prio, 5, outcome, t)
     }
 
     #[test]
@@ -479,23 +444,11 @@ mod tests {
             Some(Bound::AtLeast)
         );
         assert_eq!(ratio(&slow, &run(1, Outcome::Unsolvable, 1.0)), None);
-        let exp = Experiment {
-            runs: vec![slow, fast],
-            levels: vec![],
-            goals: vec![],
-            time_limit: 60.0,
-            repeat: 1,
-            seed: 7,
-            machine: String::new(),
-            versions: String::new(),
-            notes: vec![],
-            cubes: 0,
-            hands: 0,
-        };
+        let exp = crate::test_common::experiment(vec![slow, fast]);
         assert_eq!(
-            slimming_ratio(&exp, "lmcut", 5).map(|r| r.bound),
+            slimming_ratio(&exp, Planner::Lmcut, 5).map(|r| r.bound),
             Some(Bound::AtLeast)
         );
-        assert_eq!(slimming_ratio(&exp, "ipdb", 5), None);
+        assert_eq!(slimming_ratio(&exp, Planner::Ipdb, 5), None);
     }
 }

@@ -3,9 +3,8 @@
 //! goal towers (Figure 4).
 
 use crate::draw::{pt, text_width, Anchor, Color, Figure, Point, Stroke, Text};
-use crate::model::{
-    domain_label, format_limit, planner_label, Experiment, Goal, Level, Measure, Outcome, Run,
-};
+use crate::model::{domain_label, format_limit, Experiment, Goal, Level, Measure, Outcome, Run};
+use crate::Planner;
 
 /// Line colours for domains, by priority order (Okabe-Ito, readable when printed grey).
 const DOMAIN_COLORS: [Color; 8] = [
@@ -166,24 +165,24 @@ fn cross_marker(fig: &mut Figure, at: Point, color: Color) {
 /// domain labelled by its operator count. Runs that hit the limit are open markers at
 /// the limit with a "> limit" note, joined by dashed lines (the true time is higher);
 /// unsolvable runs are crosses; with repeats, a bar shows each run's min-max spread.
-pub fn search_time_figure(exp: &Experiment, planner: &str) -> Figure {
+pub fn search_time_figure(exp: &Experiment, planner: Planner) -> Figure {
     time_figure(exp, planner, Measure::Search)
 }
 
 /// [`search_time_figure`] by any [`Measure`]: the same figure of total times, titled
 /// so (repeats' spreads are drawn for search time only, the one measure kept per
 /// repeat).
-pub fn time_figure(exp: &Experiment, planner: &str, measure: Measure) -> Figure {
+pub fn time_figure(exp: &Experiment, planner: Planner, measure: Measure) -> Figure {
     let (w, h) = (900u32, 580u32);
     let mut fig = Figure::new(
         w,
         h,
-        &format!("{} per goal, {}", measure.title(), planner_label(planner)),
+        &format!("{} per goal, {}", measure.title(), planner.label()),
     );
     let (left, right, top, bottom) = (116.0, 670.0, 60.0, 470.0);
     title(
         &mut fig,
-        &format!("{} per goal: {}", measure.title(), planner_label(planner)),
+        &format!("{} per goal: {}", measure.title(), planner.label()),
     );
     let spread = |r: &Run| -> Vec<f64> {
         match measure {

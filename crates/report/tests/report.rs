@@ -2,17 +2,21 @@
 
 mod common;
 
-use common::check_markup;
+use common::{check_markup, experiment, run};
 use report::{
     goal_figure, goals_figure, operators_figure, report_html, search_time_figure,
-    search_time_table, text_width, Experiment, Figure, Goal, Level, LogScale, Outcome, Run, Shape,
+    search_time_table, text_width, Experiment, Figure, Goal, Level, LogScale, Outcome, Planner,
+    Shape,
 };
 
 fn figures(exp: &Experiment) -> Vec<(&'static str, Figure)> {
     vec![
-        ("search-time-lmcut", search_time_figure(exp, "lmcut")),
-        ("search-time-ipdb", search_time_figure(exp, "ipdb")),
-        ("search-time-fd-lmcut", search_time_figure(exp, "fd-lmcut")),
+        ("search-time-lmcut", search_time_figure(exp, Planner::Lmcut)),
+        ("search-time-ipdb", search_time_figure(exp, Planner::Ipdb)),
+        (
+            "search-time-fd-lmcut",
+            search_time_figure(exp, Planner::FdLmcut),
+        ),
         ("operators", operators_figure(&exp.levels)),
         ("goal-1", goal_figure(&exp.goals[0], 6)),
         ("goal-5", goal_figure(&exp.goals[4], 6)),
@@ -101,7 +105,7 @@ fn log_axis_places_decades_evenly_from_a_thousandth_to_above_the_limit() {
 #[test]
 fn runs_at_the_limit_show_as_open_markers_with_a_note() {
     let exp = Experiment::example();
-    let svg = search_time_figure(&exp, "lmcut").svg();
+    let svg = search_time_figure(&exp, Planner::Lmcut).svg();
     assert!(svg.contains("&gt; limit"));
     assert!(svg.contains("limit 60 s"));
     assert!(
@@ -116,7 +120,7 @@ fn runs_at_the_limit_show_as_open_markers_with_a_note() {
 #[test]
 fn tables_show_limit_runs_and_bounded_ratios() {
     let exp = Experiment::example();
-    let table = search_time_table(&exp, "lmcut");
+    let table = search_time_table(&exp, Planner::Lmcut);
     assert_eq!(
         table.header,
         ["domain", "Goal 1", "Goal 2", "Goal 3", "Goal 4", "Goal 5"]
@@ -154,7 +158,7 @@ fn the_page_links_every_artefact_and_shows_the_tables() {
     assert!(html.contains(r#"<a href="search-time-lmcut.png">PNG</a>"#));
     assert!(!html.contains(r#"<img src="results.csv""#));
     // A run at the limit reads "> limit" in its table cell.
-    assert!(exp.run("lmcut", 5, 5).map(|r| r.outcome) == Some(Outcome::Limit));
+    assert!(exp.run(Planner::Lmcut, 5, 5).map(|r| r.outcome) == Some(Outcome::Limit));
     assert!(html.contains(">> limit</td>"));
     // Machine, versions, notes, the goals and both planners' tables.
     for text in [
@@ -173,46 +177,17 @@ fn the_page_links_every_artefact_and_shows_the_tables() {
     assert!(!html.contains("http://") && !html.contains("https://") && !html.contains("<script"));
 }
 
-fn run(planner: &str, prio: usize, goal: usize, outcome: Outcome, t: f64) -> Run {
-    Run {
-        planner: planner.to_string(),
-        prio,
-        operators: prio * 4,
-        goal,
-        outcome,
-        search_time: t,
-        total_time: t,
-        times: vec![t],
-        expansions: None,
-        cost: None,
-        length: None,
-        executed: None,
-    }
-}
-
 #[test]
 fn odd_inputs_draw_without_panicking() {
-    let empty = Experiment {
-        runs: vec![],
-        levels: vec![],
-        goals: vec![],
-        time_limit: 0.0,
-        repeat: 0,
-        seed: 0,
-        machine: String::new(),
-        versions: String::new(),
-        notes: vec![],
-        cubes: 0,
-        hands: 0,
-    };
+    let empty = experiment(vec![]);
     let mut odd = empty.clone();
     odd.time_limit = f64::NAN;
     odd.runs = vec![
-        run("lmcut", 1, 1, Outcome::Unsolvable, 0.2),
-        run("lmcut", 1, 2, Outcome::Error, f64::NAN),
-        run("lmcut", 2, 1, Outcome::Solved, 0.0),
-        run("lmcut", 2, 2, Outcome::Solved, f64::INFINITY),
-        run("lmcut", 3, 7, Outcome::Limit, 1e12),
+        run(Planner::Lmcut, 1, 1, Outcome::Unsolvable, 0.2),
+        run(Planner::Lmcut, 1, 2, Outcome::Error, f64::NAN),
+        run(Planner::Lmcut, 2, 1, Outcome::Solved, 0.0),
+        run(Planner::Lmcut, 2, 2, Outcome::Solved, f64::INFINITY),
+        run(Planner::Lmcut, 3, 7, Outcome::Limit, 1e12),
     ];
     odd.levels = vec![Level {
         prio: 1,
@@ -235,8 +210,9 @@ fn odd_inputs_draw_without_panicking() {
     ];
     for exp in [&empty, &odd] {
         let mut figs = vec![
-            search_time_figure(exp, "lmcut"),
-            search_time_figure(exp, "nothing"),
+            search_time_figure(exp, Planner::Lmcut),
+            // A planner without runs.
+            search_time_figure(exp, Planner::FdIpdb),
             operators_figure(&exp.levels),
             goals_figure(&exp.goals, 3),
         ];
@@ -249,7 +225,7 @@ fn odd_inputs_draw_without_panicking() {
         check_markup(&html, true).unwrap_or_else(|e| panic!("{e}"));
         assert!(html.contains("href=\"a&amp;b.svg\""));
     }
-    let table = search_time_table(&odd, "lmcut");
+    let table = search_time_table(&odd, Planner::Lmcut);
     assert_eq!(table.rows[0][1], "unsolvable");
     assert_eq!(table.rows[0][2], "error");
 }

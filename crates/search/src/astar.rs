@@ -537,6 +537,22 @@ pub(crate) mod tests {
     use crate::hmax::HMax;
     use task::{Fact, Operator, VarId, Variable};
 
+    /// A task over one variable `name` of `values` values (`{prefix}0`, `{prefix}1`,
+    /// ...), starting at the first, with the goal at the last.
+    fn one_variable(name: &str, prefix: &str, values: u32, operators: Vec<Operator>) -> Task {
+        Task {
+            variables: vec![Variable {
+                name: name.into(),
+                value_names: (0..values).map(|i| format!("{prefix}{i}")).collect(),
+            }],
+            mutexes: vec![],
+            initial_state: vec![0],
+            goal: vec![Fact::new(VarId(0), values - 1)],
+            operators,
+            use_costs: false,
+        }
+    }
+
     /// A robot on a line of `n` positions, starting at 0, with the goal at `n - 1`.
     pub(crate) fn line(n: u32) -> Task {
         let step = |from: u32, to: u32| Operator {
@@ -545,19 +561,8 @@ pub(crate) mod tests {
             effects: vec![Fact::new(VarId(0), to)],
             cost: 1,
         };
-        Task {
-            variables: vec![Variable {
-                name: "at".into(),
-                value_names: (0..n).map(|i| format!("p{i}")).collect(),
-            }],
-            mutexes: vec![],
-            initial_state: vec![0],
-            goal: vec![Fact::new(VarId(0), n - 1)],
-            operators: (1..n)
-                .flat_map(|i| [step(i - 1, i), step(i, i - 1)])
-                .collect(),
-            use_costs: false,
-        }
+        let moves = (1..n).flat_map(|i| [step(i - 1, i), step(i, i - 1)]);
+        one_variable("at", "p", n, moves.collect())
     }
 
     #[test]
@@ -638,13 +643,7 @@ pub(crate) mod tests {
         assert_eq!(result.outcome, Outcome::Unsolvable);
         assert_eq!(result.statistics.expanded, 3);
         // h^max sees it at once: the initial state is a dead end.
-        let result = astar(
-            &task,
-            &mut HMax::new(&task).unwrap(),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap();
+        let result = hmax_search(&task).unwrap();
         assert_eq!(result.outcome, Outcome::Unsolvable);
         assert_eq!(result.statistics.initial_h, None);
         assert_eq!(
@@ -660,13 +659,7 @@ pub(crate) mod tests {
             effects: vec![Fact::new(VarId(0), 3)],
             cost: 0,
         });
-        let result = astar(
-            &task,
-            &mut HMax::new(&task).unwrap(),
-            &SearchLimits::default(),
-            None,
-        )
-        .unwrap();
+        let result = hmax_search(&task).unwrap();
         assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 2));
         assert_eq!(result.statistics.dead_ends, 1);
     }
@@ -734,24 +727,13 @@ pub(crate) mod tests {
         // evaluates 299 children, three seconds of evaluation. The search must stop a
         // few evaluations after the deadline, not at the next expansion.
         let values = 300;
-        let task = Task {
-            variables: vec![Variable {
-                name: "v".into(),
-                value_names: (0..values).map(|i| format!("v{i}")).collect(),
-            }],
-            mutexes: vec![],
-            initial_state: vec![0],
-            goal: vec![Fact::new(VarId(0), values - 1)],
-            operators: (1..values)
-                .map(|to| Operator {
-                    name: format!("go {to}"),
-                    preconditions: vec![Fact::new(VarId(0), 0)],
-                    effects: vec![Fact::new(VarId(0), to)],
-                    cost: 1,
-                })
-                .collect(),
-            use_costs: false,
+        let go = |to: u32| Operator {
+            name: format!("go {to}"),
+            preconditions: vec![Fact::new(VarId(0), 0)],
+            effects: vec![Fact::new(VarId(0), to)],
+            cost: 1,
         };
+        let task = one_variable("v", "v", values, (1..values).map(go).collect());
         let start = Instant::now();
         let limits = SearchLimits {
             deadline: Some(start + Duration::from_millis(100)),
@@ -810,6 +792,10 @@ pub(crate) mod tests {
     /// A* with the blind heuristic and no limits.
     fn blind_search(task: &Task) -> Result<SearchResult, SearchError> {
         astar(task, &mut Blind::new(task), &SearchLimits::default(), None)
+    }
+
+    fn hmax_search(task: &Task) -> Result<SearchResult, SearchError> {
+        astar(task, &mut HMax::new(task)?, &SearchLimits::default(), None)
     }
 
     /// `line(n)` with every move costing `cost`.

@@ -22,8 +22,52 @@ use crate::pdb::build_collection_within;
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
 
-/// The heuristics demoplan computes.
-pub const HEURISTICS: &[&str] = &["blind", "hmax", "lmcut", "pdb", "ipdb", "cpdbs"];
+/// A heuristic demoplan computes, by its name in search strings: the one type of the
+/// concept (a [`HeuristicConfig`] adds its settings, [`HeuristicConfig::kind`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HeuristicName {
+    /// `blind()`.
+    Blind,
+    /// `hmax()`.
+    HMax,
+    /// `lmcut()`.
+    LmCut,
+    /// `pdb()`.
+    Pdb,
+    /// `ipdb()`.
+    Ipdb,
+    /// `cpdbs()`.
+    Cpdbs,
+}
+
+impl HeuristicName {
+    /// Every heuristic, in the order error messages list them.
+    pub const ALL: [HeuristicName; 6] = [
+        HeuristicName::Blind,
+        HeuristicName::HMax,
+        HeuristicName::LmCut,
+        HeuristicName::Pdb,
+        HeuristicName::Ipdb,
+        HeuristicName::Cpdbs,
+    ];
+
+    /// Its name in search strings: `blind`, `hmax`, `lmcut`, `pdb`, `ipdb`, `cpdbs`.
+    pub fn name(self) -> &'static str {
+        match self {
+            HeuristicName::Blind => "blind",
+            HeuristicName::HMax => "hmax",
+            HeuristicName::LmCut => "lmcut",
+            HeuristicName::Pdb => "pdb",
+            HeuristicName::Ipdb => "ipdb",
+            HeuristicName::Cpdbs => "cpdbs",
+        }
+    }
+
+    /// The heuristic of a name in a search string, if there is one.
+    pub fn from_name(name: &str) -> Option<HeuristicName> {
+        HeuristicName::ALL.into_iter().find(|h| h.name() == name)
+    }
+}
 
 /// Fast Downward's aliases that demoplan knows: name and search string.
 pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
@@ -95,16 +139,21 @@ pub enum PatternCollectionConfig {
 }
 
 impl HeuristicConfig {
+    /// Which heuristic it configures.
+    pub fn kind(&self) -> HeuristicName {
+        match self {
+            HeuristicConfig::Blind => HeuristicName::Blind,
+            HeuristicConfig::HMax => HeuristicName::HMax,
+            HeuristicConfig::LmCut => HeuristicName::LmCut,
+            HeuristicConfig::Pdb { .. } => HeuristicName::Pdb,
+            HeuristicConfig::Ipdb(_) => HeuristicName::Ipdb,
+            HeuristicConfig::Cpdbs { .. } => HeuristicName::Cpdbs,
+        }
+    }
+
     /// Its name in search strings.
     pub fn name(&self) -> &'static str {
-        match self {
-            HeuristicConfig::Blind => "blind",
-            HeuristicConfig::HMax => "hmax",
-            HeuristicConfig::LmCut => "lmcut",
-            HeuristicConfig::Pdb { .. } => "pdb",
-            HeuristicConfig::Ipdb(_) => "ipdb",
-            HeuristicConfig::Cpdbs { .. } => "cpdbs",
-        }
+        self.kind().name()
     }
 
     /// The heuristic for `task` under `limits`; fails if the task is invalid or a pattern
@@ -377,7 +426,7 @@ fn known() -> String {
     format!(
         "known search engines: {}\nknown heuristics: {}",
         SEARCH_ENGINES.join(", "),
-        HEURISTICS.join(", "),
+        HeuristicName::ALL.map(HeuristicName::name).join(", "),
     )
 }
 
@@ -421,24 +470,25 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
             })
         }
     };
-    let heuristic = match term.name.as_str() {
-        "blind" => HeuristicConfig::Blind,
-        "hmax" => HeuristicConfig::HMax,
-        "lmcut" => HeuristicConfig::LmCut,
-        "pdb" => return interpret_pdb(term),
-        "ipdb" => return Ok(HeuristicConfig::Ipdb(interpret_ipdb(term, true)?)),
-        "cpdbs" => return interpret_cpdbs(term),
-        name if SEARCH_ENGINES.contains(&name) => {
+    let name = term.name.as_str();
+    let Some(kind) = HeuristicName::from_name(name) else {
+        if SEARCH_ENGINES.contains(&name) {
             return Err(ConfigError::InvalidArgument {
                 function: "astar".into(),
                 message: format!("`{name}` is a search engine, not a heuristic"),
-            })
+            });
         }
-        name => {
-            return Err(ConfigError::UnknownHeuristic {
-                name: name.to_string(),
-            })
-        }
+        return Err(ConfigError::UnknownHeuristic {
+            name: name.to_string(),
+        });
+    };
+    let heuristic = match kind {
+        HeuristicName::Blind => HeuristicConfig::Blind,
+        HeuristicName::HMax => HeuristicConfig::HMax,
+        HeuristicName::LmCut => HeuristicConfig::LmCut,
+        HeuristicName::Pdb => return interpret_pdb(term),
+        HeuristicName::Ipdb => return Ok(HeuristicConfig::Ipdb(interpret_ipdb(term, true)?)),
+        HeuristicName::Cpdbs => return interpret_cpdbs(term),
     };
     Args::new(term, &[])?.finish()?;
     Ok(heuristic)
@@ -1313,8 +1363,11 @@ mod tests {
             "cpdbs([[0], []])",
             "cpdbs(hillclimbing())",
         ];
+        let mut kinds = Vec::new();
         for config in configs {
             let config = ok(&format!("astar({config})")).heuristic;
+            assert_eq!(HeuristicName::from_name(config.name()), Some(config.kind()));
+            kinds.push(config.kind());
             let mut h = config
                 .build_with_limits(&task, &SearchLimits::default())
                 .unwrap()
@@ -1332,6 +1385,8 @@ mod tests {
                 )
             );
         }
+        // Every heuristic is among them.
+        assert!(HeuristicName::ALL.iter().all(|k| kinds.contains(k)));
         let climbs = ok("astar(cpdbs(hillclimbing()))")
             .heuristic
             .build_with_limits(&task, &SearchLimits::default())

@@ -840,10 +840,7 @@ fn count_by_reduced_cliques(
 }
 
 /// [`count_improvements`] for groups whose candidates need the collection's part on few
-/// samples. The collection's values on sample `s` are in
-/// `values[p * samples + s]`, its canonical value in `sample_h[s]`; candidate `i`'s
-/// values in `candidate_h[i * samples + s]`, and the collection patterns it is not
-/// additive with in `non_additive[keys[i]]`.
+/// samples, with its arguments laid out as there.
 ///
 /// A candidate with value `h` improves `s` if `h` is a dead end, or if some clique `C`
 /// has `sum(C) - sum(C ∩ N) > h(s) - h`. Per sample the cliques are ordered by

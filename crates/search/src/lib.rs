@@ -81,8 +81,8 @@ mod test_tasks;
 
 pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
 pub use config::{
-    alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, PatternCollectionConfig,
-    SearchConfig, ALIASES, HEURISTICS, SEARCH_ENGINES,
+    alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, HeuristicName,
+    PatternCollectionConfig, SearchConfig, ALIASES, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};

@@ -67,7 +67,7 @@ impl FastDownward {
         memory_limit: Option<u64>,
     ) -> PlanRun {
         let start = Instant::now();
-        let mut run = PlanRun::ended(Outcome::Error(String::new()));
+        let mut run = PlanRun::ended(Outcome::Error);
         let dir = std::env::temp_dir().join(format!(
             "demoplan-fd-{}-{}",
             std::process::id(),
@@ -77,17 +77,17 @@ impl FastDownward {
         let _ = std::fs::remove_dir_all(&dir);
         match result {
             Ok((code, log, plan)) => {
-                run.outcome = match code {
-                    Some(0..=3) => Outcome::Solved,
-                    Some(10..=13) => Outcome::Unsolvable,
-                    Some(20 | 22) => Outcome::MemoryLimit,
-                    Some(21 | 23 | 24) => Outcome::TimeLimit,
-                    other => Outcome::Error(format!(
+                match code {
+                    Some(0..=3) => run.outcome = Outcome::Solved,
+                    Some(10..=13) => run.outcome = Outcome::Unsolvable,
+                    Some(20 | 22) => run.outcome = Outcome::MemoryLimit,
+                    Some(21 | 23 | 24) => run.outcome = Outcome::TimeLimit,
+                    other => run.fail(format!(
                         "Fast Downward exited with {}; its log ends: {}",
                         other.map_or("a signal".to_string(), |c| c.to_string()),
                         log.lines().rev().take(3).collect::<Vec<_>>().join(" / ")
                     )),
-                };
+                }
                 let parsed = parse_log(&log);
                 run.translate_time = parsed.translate;
                 run.heuristic_time = parsed.heuristic;
@@ -99,9 +99,7 @@ impl FastDownward {
                 if run.outcome == Outcome::Solved {
                     match pddl::parse_plan(&plan) {
                         Ok(read) => run.plan = read.steps,
-                        Err(e) => {
-                            run.outcome = Outcome::Error(format!("Fast Downward's sas_plan, {e}"))
-                        }
+                        Err(e) => run.fail(format!("Fast Downward's sas_plan, {e}")),
                     }
                     // Fast Downward's own verdict, from its cost line.
                     if plan.contains("(unit cost)") {
@@ -109,7 +107,7 @@ impl FastDownward {
                     }
                 }
             }
-            Err(e) => run.outcome = Outcome::Error(e),
+            Err(e) => run.fail(e),
         }
         run.total_time = start.elapsed();
         run

@@ -163,7 +163,7 @@ fn outcome_line(outcome: &Outcome) -> &'static str {
         Outcome::MemoryLimit => "Memory limit has been reached.",
         Outcome::RelaxedUnreachable => "Search stopped without finding a solution.",
         Outcome::Cancelled => "Search cancelled.",
-        Outcome::Error(_) => "Search stopped with an error.",
+        Outcome::Error => "Search stopped with an error.",
     }
 }
 
@@ -260,7 +260,7 @@ impl LoggedRun {
                 Outcome::TimeLimit => "out_of_time",
                 Outcome::MemoryLimit => "out_of_memory",
                 Outcome::Cancelled => "cancelled",
-                Outcome::Error(_) => "error",
+                Outcome::Error => "error",
             },
             peak_memory_kb,
             plan_cost: self.run.cost,

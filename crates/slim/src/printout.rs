@@ -106,10 +106,7 @@ mod tests {
 
     fn solved(outcomes: &[Outcome]) -> Solved {
         Solved {
-            levels: (1..)
-                .zip(outcomes)
-                .map(|(p, o)| level(p, o.clone()))
-                .collect(),
+            levels: (1..).zip(outcomes).map(|(p, o)| level(p, *o)).collect(),
             cumulative: Duration::from_secs(3),
         }
     }

@@ -2,8 +2,13 @@
 
 use std::time::{Duration, Instant};
 
-/// How a planning run ended.
-#[derive(Debug, Clone, PartialEq, Eq)]
+use serde::{Deserialize, Serialize};
+
+/// How a planning run ended: the one type of the concept, also in the experiment's
+/// records, where it is written as its [`word`](Outcome::word) (`"outcome":"memory"`).
+/// Why a run is an [`Outcome::Error`] is [`PlanRun::error`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(try_from = "String", into = "&'static str")]
 pub enum Outcome {
     /// A plan was found (optimal within its domain).
     Solved,
@@ -18,11 +23,23 @@ pub enum Outcome {
     /// The caller cancelled the run (`task::Limits::cancel`): no result, and no limit
     /// reached either.
     Cancelled,
-    /// The run could not be made (bad input, a planner that failed); the reason.
-    Error(String),
+    /// The run could not be made (bad input, a planner that failed); the reason is
+    /// [`PlanRun::error`].
+    Error,
 }
 
 impl Outcome {
+    /// Every outcome, in the order of the words' documentation.
+    pub const ALL: [Outcome; 7] = [
+        Outcome::Solved,
+        Outcome::RelaxedUnreachable,
+        Outcome::Unsolvable,
+        Outcome::TimeLimit,
+        Outcome::MemoryLimit,
+        Outcome::Cancelled,
+        Outcome::Error,
+    ];
+
     /// The outcome of a run stopped at `limit`.
     pub fn limit(limit: task::Limit) -> Outcome {
         match limit {
@@ -42,8 +59,44 @@ impl Outcome {
             Outcome::TimeLimit => "limit",
             Outcome::MemoryLimit => "memory",
             Outcome::Cancelled => "cancelled",
-            Outcome::Error(_) => "error",
+            Outcome::Error => "error",
         }
+    }
+
+    /// The outcome of a [`word`](Outcome::word), if it is one.
+    pub fn from_word(word: &str) -> Option<Outcome> {
+        Outcome::ALL.into_iter().find(|o| o.word() == word)
+    }
+
+    /// Whether the run stopped at its time or memory limit (its times are lower
+    /// bounds).
+    pub fn hit_limit(self) -> bool {
+        matches!(self, Outcome::TimeLimit | Outcome::MemoryLimit)
+    }
+}
+
+impl std::fmt::Display for Outcome {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.word())
+    }
+}
+
+impl From<Outcome> for &'static str {
+    fn from(outcome: Outcome) -> &'static str {
+        outcome.word()
+    }
+}
+
+impl TryFrom<String> for Outcome {
+    type Error = String;
+
+    /// What a record file says, read back; an unknown word names the field and the
+    /// words it may be.
+    fn try_from(word: String) -> Result<Outcome, String> {
+        Outcome::from_word(&word).ok_or_else(|| {
+            let words: Vec<&str> = Outcome::ALL.iter().map(|o| o.word()).collect();
+            format!("outcome `{word}` is none of {}", words.join(", "))
+        })
     }
 }
 
@@ -52,6 +105,8 @@ impl Outcome {
 pub struct PlanRun {
     /// How it ended.
     pub outcome: Outcome,
+    /// Why the run could not be made, for an [`Outcome::Error`] (and only for one).
+    pub error: Option<String>,
     /// The plan's steps.
     pub plan: Vec<pddl::Step>,
     /// The plan's cost.
@@ -147,6 +202,7 @@ impl PlanRun {
     pub fn ended(outcome: Outcome) -> PlanRun {
         PlanRun {
             outcome,
+            error: None,
             plan: Vec::new(),
             cost: None,
             cost_kind: pddl::CostKind::General,
@@ -158,6 +214,20 @@ impl PlanRun {
             total_time: Duration::ZERO,
             peak_memory_kb: None,
         }
+    }
+
+    /// A run that could not be made, and why: [`Outcome::Error`].
+    pub fn failed(reason: String) -> PlanRun {
+        PlanRun {
+            error: Some(reason),
+            ..PlanRun::ended(Outcome::Error)
+        }
+    }
+
+    /// Makes this run an [`Outcome::Error`], for `reason`.
+    pub fn fail(&mut self, reason: String) {
+        self.outcome = Outcome::Error;
+        self.error = Some(reason);
     }
 
     /// The plan file's text: `(action args)` lines and the cost line, `unit cost` if and
@@ -191,22 +261,25 @@ pub fn translate_checked_within(
     limits: &task::Limits,
 ) -> Translated {
     let start = Instant::now();
-    let done = |outcome: Outcome| {
-        let mut run = PlanRun::ended(outcome);
+    let done = |mut run: PlanRun| {
         run.translate_time = start.elapsed();
         run.total_time = run.translate_time;
         Translated::Done(run)
     };
     if let Err(e) = pddl::check_problem(domain, problem) {
-        return done(Outcome::Error(format!(
+        return done(PlanRun::failed(format!(
             "problem does not fit the domain: {e}"
         )));
     }
     match translate::translate_within(domain, problem, limits) {
         Ok(translate::Translation::Task(t)) => Translated::Task(Box::new(t.task), start.elapsed()),
-        Ok(translate::Translation::Unsolvable { .. }) => done(Outcome::RelaxedUnreachable),
-        Ok(translate::Translation::Stopped { limit, .. }) => done(Outcome::limit(limit)),
-        Err(e) => done(Outcome::Error(e.to_string())),
+        Ok(translate::Translation::Unsolvable { .. }) => {
+            done(PlanRun::ended(Outcome::RelaxedUnreachable))
+        }
+        Ok(translate::Translation::Stopped { limit, .. }) => {
+            done(PlanRun::ended(Outcome::limit(limit)))
+        }
+        Err(e) => done(PlanRun::failed(e.to_string())),
     }
 }
 
@@ -225,6 +298,6 @@ pub fn plan_task(
     let input = crate::PlanInput::Task(task);
     match crate::plan_logged(input, config, limits, Instant::now(), &mut |_| {}) {
         Ok(logged) => logged.run,
-        Err(e) => PlanRun::ended(Outcome::Error(e.to_string())),
+        Err(e) => PlanRun::failed(e.to_string()),
     }
 }

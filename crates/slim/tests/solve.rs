@@ -6,28 +6,34 @@
 use std::time::Duration;
 
 use learn::{paper_goal_tower, problem, tower_goal, DomainOptions, Scene};
-use slim::{solve, Backend, Outcome, RunLimits};
+use slim::{solve, Backend, LevelResult, Outcome, RunLimits, Solved};
 
 mod common;
 
 use common::widening_library as fixture;
 
+/// Algorithm 1 on the widening library for `problem`, with LM-cut and a minute per
+/// level, each level's run handed to `seen`.
+fn widen(problem: &pddl::Problem, seen: impl FnMut(&LevelResult)) -> Solved {
+    let backend = Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap());
+    let limits = RunLimits::time(Duration::from_secs(60));
+    solve(
+        &fixture(),
+        DomainOptions::default(),
+        problem,
+        &backend,
+        limits,
+        seen,
+    )
+}
+
 #[test]
 fn widening_finds_the_plan_on_the_second_level() {
-    let library = fixture();
     let scene = Scene::cubes_on_table(4);
     let tower = paper_goal_tower(2);
     let p = problem("goal", "demoplan", &scene, &tower_goal(&scene, &tower));
-    let backend = Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap());
     let mut seen = Vec::new();
-    let solved = solve(
-        &library,
-        DomainOptions::default(),
-        &p,
-        &backend,
-        RunLimits::time(Duration::from_secs(60)),
-        |l| seen.push((l.prio, l.run.outcome.clone())),
-    );
+    let solved = widen(&p, |l| seen.push((l.prio, l.run.outcome)));
     assert_eq!(
         seen,
         [(1, Outcome::RelaxedUnreachable), (2, Outcome::Solved)]
@@ -44,7 +50,6 @@ fn widening_finds_the_plan_on_the_second_level() {
 
 #[test]
 fn exhausting_every_level_reports_each() {
-    let library = fixture();
     let scene = Scene::cubes_on_table(3);
     // Holding cube_1 while it stands on the table: each fact is reachable on its own
     // (so the relaxation alone rejects no level), but taking a cube lifts it off the
@@ -63,19 +68,8 @@ fn exhausting_every_level_reports_each() {
         ),
     ];
     let p = problem("impossible", "demoplan", &scene, &goal);
-    let backend = Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap());
-    let solved = solve(
-        &library,
-        DomainOptions::default(),
-        &p,
-        &backend,
-        RunLimits::time(Duration::from_secs(60)),
-        |_| {},
-    );
+    let solved = widen(&p, |_| {});
     assert!(solved.plan_level().is_none());
-    let outcomes: Vec<&Outcome> = solved.levels.iter().map(|l| &l.run.outcome).collect();
-    assert_eq!(
-        outcomes,
-        [&Outcome::Unsolvable, &Outcome::RelaxedUnreachable]
-    );
+    let outcomes: Vec<Outcome> = solved.levels.iter().map(|l| l.run.outcome).collect();
+    assert_eq!(outcomes, [Outcome::Unsolvable, Outcome::RelaxedUnreachable]);
 }

@@ -761,94 +761,87 @@ end_operator
 
     #[test]
     fn messages_say_what_was_expected_and_found() {
-        let message = |input: &str| read(input).unwrap_err().to_string();
-        assert_eq!(
-            message(""),
-            "line 1: expected `begin_version`, found end of file"
-        );
-        assert_eq!(
-            message(&edit(2, "2")),
-            "line 2: expected version 3, found `2`"
-        );
-        assert_eq!(
-            message(&edit(5, "")),
-            "line 5: expected 0 or 1 (whether the task has action costs), found an empty line"
-        );
-        assert_eq!(
-            message(&edit(27, "1 3")),
-            "line 27: value 3 of variable 1 (var1) is out of range: it has 3 values"
-        );
-        assert_eq!(
-            message(&edit(43, "1 1 0 0 -1 0")),
-            "line 43: conditional effects are not supported"
-        );
-        assert_eq!(message(&edit(54, "1")), "line 54: axioms are not supported");
+        let costs =
+            "line 5: expected 0 or 1 (whether the task has action costs), found an empty line";
+        let range = "line 27: value 3 of variable 1 (var1) is out of range: it has 3 values";
+        for (input, message) in [
+            (
+                String::new(),
+                "line 1: expected `begin_version`, found end of file",
+            ),
+            (edit(2, "2"), "line 2: expected version 3, found `2`"),
+            (edit(5, ""), costs),
+            (edit(27, "1 3"), range),
+            (
+                edit(43, "1 1 0 0 -1 0"),
+                "line 43: conditional effects are not supported",
+            ),
+            (edit(54, "1"), "line 54: axioms are not supported"),
+        ] {
+            assert_eq!(read(&input).unwrap_err().to_string(), message);
+        }
     }
 
     #[test]
     fn malformed_inputs() {
         use Kind::*;
+        // A case a line: the line of `SMALL` edited, its new text, the kind of error and
+        // the line it names, and what the case is. "variable count too large": a huge
+        // count must not allocate; the file ends long before.
+        let edits = "
+1  | begin_versio | syntax      | 1  | misspelt keyword
+2  | 2            | syntax      | 2  | old version
+5  | 2            | syntax      | 5  | metric 2
+7  | x            | syntax      | 7  | variable count not a number
+7  | 99999999999  | syntax      | 7  | variable count overflows
+7  | 4294967295   | syntax      | 23 | variable count too large
+9  | var 0        | syntax      | 9  | variable name with a space
+10 | 0            | unsupported | 10 | derived variable
+10 | none         | syntax      | 10 | axiom layer not a number
+11 | 0            | invalid     | 11 | empty domain
+18 | 4            | syntax      | 23 | domain size too large
+26 | 2 0          | invalid     | 26 | mutex fact of a missing variable
+27 | 1 3          | invalid     | 27 | mutex fact out of range
+27 | 1 1 1        | syntax      | 27 | mutex fact with three numbers
+30 | 1 0          | syntax      | 30 | two numbers in the state
+31 | 3            | invalid     | 31 | initial value out of range
+31 | end_state    | syntax      | 31 | state too short
+43 | 1 1 0 0 -1 0 | unsupported | 43 | conditional effect
+43 | 0 0 -2 0     | syntax      | 43 | effect precondition -2
+43 | 0 0 0        | syntax      | 43 | effect with three numbers
+51 | 0 1 1 3      | invalid     | 51 | effect post out of range
+51 | 0 1 3 0      | invalid     | 51 | effect pre out of range
+41 | 0 1          | invalid     | 43 | prevail on a changed variable
+44 | -5           | syntax      | 44 | negative cost
+45 | end_op       | syntax      | 45 | missing end_operator
+54 | 1            | unsupported | 54 | axioms
+";
+        for case in edits.lines().filter(|l| !l.is_empty()) {
+            let fields: Vec<&str> = case.split('|').map(str::trim).collect();
+            let [line, text, kind, at, name] = fields[..] else {
+                panic!("not a case: {case}")
+            };
+            let kind = match kind {
+                "syntax" => Syntax,
+                "invalid" => Invalid,
+                "unsupported" => Unsupported,
+                other => panic!("{name}: no kind {other}"),
+            };
+            eprintln!("case: {name}");
+            check_error(
+                &edit(line.parse().unwrap(), text),
+                kind,
+                at.parse().unwrap(),
+            );
+        }
+        // The empty file, edits that add a line, a cut file and one with more after it.
         let cases: Vec<(&str, String, Kind, usize)> = vec![
             ("empty input", String::new(), Syntax, 1),
-            ("misspelt keyword", edit(1, "begin_versio"), Syntax, 1),
-            ("old version", edit(2, "2"), Syntax, 2),
-            ("metric 2", edit(5, "2"), Syntax, 5),
-            ("variable count not a number", edit(7, "x"), Syntax, 7),
-            (
-                "variable count overflows",
-                edit(7, "99999999999"),
-                Syntax,
-                7,
-            ),
-            // A huge count must not allocate; the file ends long before.
-            (
-                "variable count too large",
-                edit(7, "4294967295"),
-                Syntax,
-                23,
-            ),
-            ("variable name with a space", edit(9, "var 0"), Syntax, 9),
-            ("derived variable", edit(10, "0"), Unsupported, 10),
-            ("axiom layer not a number", edit(10, "none"), Syntax, 10),
-            ("empty domain", edit(11, "0"), Invalid, 11),
-            ("domain size too large", edit(18, "4"), Syntax, 23),
-            (
-                "mutex fact of a missing variable",
-                edit(26, "2 0"),
-                Invalid,
-                26,
-            ),
-            ("mutex fact out of range", edit(27, "1 3"), Invalid, 27),
-            (
-                "mutex fact with three numbers",
-                edit(27, "1 1 1"),
-                Syntax,
-                27,
-            ),
-            ("two numbers in the state", edit(30, "1 0"), Syntax, 30),
-            ("initial value out of range", edit(31, "3"), Invalid, 31),
-            ("state too short", edit(31, "end_state"), Syntax, 31),
             (
                 "goal variable twice",
                 edit(34, "2").replacen("0 0\nend_goal", "0 0\n0 1\nend_goal", 1),
                 Invalid,
                 36,
-            ),
-            (
-                "conditional effect",
-                edit(43, "1 1 0 0 -1 0"),
-                Unsupported,
-                43,
-            ),
-            ("effect precondition -2", edit(43, "0 0 -2 0"), Syntax, 43),
-            ("effect with three numbers", edit(43, "0 0 0"), Syntax, 43),
-            ("effect post out of range", edit(51, "0 1 1 3"), Invalid, 51),
-            ("effect pre out of range", edit(51, "0 1 3 0"), Invalid, 51),
-            (
-                "prevail on a changed variable",
-                edit(41, "0 1"),
-                Invalid,
-                43,
             ),
             (
                 "prevail twice",
@@ -862,9 +855,6 @@ end_operator
                 Invalid,
                 52,
             ),
-            ("negative cost", edit(44, "-5"), Syntax, 44),
-            ("missing end_operator", edit(45, "end_op"), Syntax, 45),
-            ("axioms", edit(54, "1"), Unsupported, 54),
             (
                 "truncated",
                 SMALL.lines().take(40).collect::<Vec<_>>().join("\n"),

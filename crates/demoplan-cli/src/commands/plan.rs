@@ -145,7 +145,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         slim::Outcome::MemoryLimit => ExitCode::OUT_OF_MEMORY,
         slim::Outcome::Unsolvable | slim::Outcome::RelaxedUnreachable => ExitCode::UNSOLVABLE,
         // Nothing sets the command line's cancel flag (it has none): Ctrl-C kills it.
-        slim::Outcome::Cancelled | slim::Outcome::Error(_) => ExitCode::CRITICAL_SEARCH_ERROR,
+        slim::Outcome::Cancelled | slim::Outcome::Error => ExitCode::CRITICAL_SEARCH_ERROR,
     })
 }
 

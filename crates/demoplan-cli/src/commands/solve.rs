@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use learn::DomainOptions;
-use slim::{Backend, FastDownward, Outcome, PlannerName};
+use slim::{Backend, FastDownward, PlannerName};
 
 use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
@@ -63,7 +63,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     print!("{}", slim::level_header());
     let solved = slim::solve(&library, options, &problem, &backend, limits, |level| {
         print!("{}", slim::level_row(level));
-        if let Outcome::Error(e) = &level.run.outcome {
+        if let Some(e) = &level.run.error {
             eprintln!("error at priority {}: {e}", level.prio);
         }
     });

@@ -1,4 +1,45 @@
-//! A tiny well-formedness checker for the SVG and HTML this crate writes.
+//! What the tests share, the integration tests and the crate's unit tests (`src/lib.rs`
+//! includes this file under `cfg(test)`): a tiny well-formedness checker for the SVG and
+//! HTML this crate writes, and runs and experiments written briefly.
+
+#![allow(dead_code)] // each test binary uses its part
+
+use report::{Experiment, Outcome, Planner, Run};
+
+/// A run with no counts: `prio * 4` operators, search and total time `t`.
+pub fn run(planner: Planner, prio: usize, goal: usize, outcome: Outcome, t: f64) -> Run {
+    Run {
+        planner,
+        prio,
+        operators: prio * 4,
+        goal,
+        outcome,
+        search_time: t,
+        total_time: t,
+        times: vec![t],
+        expansions: None,
+        cost: None,
+        length: None,
+        executed: None,
+    }
+}
+
+/// An experiment of `runs` and nothing else.
+pub fn experiment(runs: Vec<Run>) -> Experiment {
+    Experiment {
+        runs,
+        levels: vec![],
+        goals: vec![],
+        time_limit: 0.0,
+        repeat: 0,
+        seed: 0,
+        machine: String::new(),
+        versions: String::new(),
+        notes: vec![],
+        cubes: 0,
+        hands: 0,
+    }
+}
 
 /// Elements HTML writes without a closing tag.
 const VOID: [&str; 6] = ["meta", "img", "br", "hr", "link", "input"];

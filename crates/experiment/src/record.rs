@@ -388,7 +388,7 @@ mod tests {
                 r#""outcome":"solved""#,
                 r#""outcome":"won""#,
                 "outcome `won` is none of solved, relaxed-unreachable, unsolvable, limit, \
-                 memory, error",
+                 memory, cancelled, error",
             ),
             (
                 r#""planner":"lmcut""#,

@@ -1,19 +1,17 @@
 """The learning side: operator libraries learned from demonstrations, their domains by
 priority, Algorithm 1, simulated demonstrations, and recordings as arrays.
 
-Learning and simulating run the command line's own ``learn`` and ``simulate`` inside
-the extension (their output captured, never printed), so that a library learned here is
-the file ``demoplan learn`` writes; everything else calls the library crates directly.
+Everything calls the library crates directly, as the command line's commands do, so
+that a library learned here is the file ``demoplan learn`` writes.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import json
 import os
 import pathlib
 import tempfile
-from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Sequence, Tuple
+from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Sequence
 
 from demoplan import _demoplan
 from demoplan.errors import DemoplanError, error_for_exit_code
@@ -23,34 +21,13 @@ if TYPE_CHECKING:
     import numpy
 
 
-def _run_quietly(argv: Sequence[str]) -> Tuple[int, str]:
-    """Runs the command line on ``argv`` with its standard output and error captured
-    (file descriptors 1 and 2 point at a temporary file meanwhile); returns the exit
-    code and what it wrote."""
-    import sys
-
-    sys.stdout.flush()
-    sys.stderr.flush()
-    with tempfile.TemporaryFile(mode="w+b") as capture:
-        saved = [os.dup(1), os.dup(2)]
-        try:
-            os.dup2(capture.fileno(), 1)
-            os.dup2(capture.fileno(), 2)
-            code = _demoplan.run(["demoplan", *argv])
-        finally:
-            os.dup2(saved[0], 1)
-            os.dup2(saved[1], 2)
-            for fd in saved:
-                os.close(fd)
-        capture.seek(0)
-        return code, capture.read().decode("utf-8", errors="replace")
-
-
-def _checked(argv: Sequence[str]) -> str:
-    code, text = _run_quietly(argv)
-    if code != 0:
-        raise error_for_exit_code(code, text.strip() or f"demoplan {argv[0]} failed with exit code {code}")
-    return text
+def _count(name: str, value: int, most: int = 2**32 - 1) -> int:
+    """``value`` checked as the command line's option ``name`` is: a whole number from 0
+    to ``most`` (what the extension's argument holds), or InputError (exit code 36)
+    saying so, where the extension would raise OverflowError or TypeError."""
+    if isinstance(value, bool) or not isinstance(value, int) or not 0 <= value <= most:
+        raise error_for_exit_code(36, f"error: {name}: {value!r} is not a whole number from 0 to {most}")
+    return value
 
 
 @dataclasses.dataclass(frozen=True)
@@ -133,18 +110,9 @@ class Library:
         if not files:
             raise DemoplanError("learn: no recordings given", 36)
         with tempfile.TemporaryDirectory() as folder:
-            before = os.path.join(folder, "before.json")
-            after = os.path.join(folder, "after.json")
-            argv = ["learn", *files, "-o", after, "--lambda", str(self.lambda_)]
-            if self._inner.segments > 0 or self._inner.recordings:
-                with open(before, "w", encoding="utf-8") as out:
-                    out.write(self.to_json())
-                argv += ["--library", before]
-            if mapping is not None:
-                argv += ["--mapping", os.fspath(mapping)]
-            log = _checked(argv)
-            with open(after, encoding="utf-8") as learned:
-                self._inner = _demoplan._Library.from_json(learned.read(), after)
+            self._inner, log = _demoplan.learn(
+                self._inner, files, folder, None if mapping is None else os.fspath(mapping)
+            )
         return log
 
     @property
@@ -240,22 +208,14 @@ def simulate(
     the recordings, their ground truth and ``simulation.json`` to ``out``; returns the
     recordings' paths."""
     folder = pathlib.Path(out)
-    argv = [
-        "simulate",
-        "-o",
-        str(folder),
-        "--participants",
-        str(participants),
-        "--per-participant",
-        str(per_participant),
-        "--seed",
-        str(seed),
-    ]
-    if cubes is not None:
-        argv += ["--cubes", str(cubes)]
-    _checked(argv)
-    manifest: Any = json.loads((folder / "simulation.json").read_text(encoding="utf-8"))
-    return [folder / entry["recording"] for entry in manifest["recordings"]]
+    names = _demoplan.simulate(
+        os.fspath(folder),
+        _count("participants", participants),
+        _count("per_participant", per_participant),
+        _count("seed", seed, 2**64 - 1),
+        None if cubes is None else _count("cubes", cubes),
+    )
+    return [folder / name for name in names]
 
 
 class Recording:
@@ -289,17 +249,9 @@ def tower_problem(
     """A tower problem for learned domains (``demoplan problem``) as PDDL text: the cubes
     of ``tower`` stacked bottom first (e.g. ``["cube_1", "cube_2", "cube_3"]``), or the paper's goal
     ``paper_goal`` (1-5), on a table of ``cubes`` cubes with ``hands`` hands."""
-    with tempfile.TemporaryDirectory() as folder:
-        out = os.path.join(folder, "problem.pddl")
-        argv = ["problem", "-o", out]
-        if tower is not None:
-            argv += ["--tower", ",".join(tower)]
-        if paper_goal is not None:
-            argv += ["--paper-goal", str(paper_goal)]
-        if cubes is not None:
-            argv += ["--cubes", str(cubes)]
-        if hands is not None:
-            argv += ["--hands", str(hands)]
-        _checked(argv)
-        with open(out, encoding="utf-8") as text:
-            return text.read()
+    return _demoplan.tower_problem(
+        None if tower is None else ",".join(tower),
+        None if paper_goal is None else _count("paper_goal", paper_goal, 2**64 - 1),
+        None if cubes is None else _count("cubes", cubes, 2**64 - 1),
+        None if hands is None else _count("hands", hands, 2**64 - 1),
+    )

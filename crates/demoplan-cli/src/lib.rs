@@ -32,6 +32,12 @@ pub use exit::ExitCode;
 // renders them, and the counting allocator's readings (the extension's Rust heap).
 pub use diagnostic::Failure;
 pub use memory::{heap_in_use, probe as memory_probe};
+// For the Python extension's `learn`, `simulate` and `tower_problem`, which call the
+// library crates as the commands do: bad demonstration files reported as the command
+// line reports them (file, line, field), and files written whole or not at all.
+pub use commands::demo_input::file_failure;
+pub use output::{write_atomically, write_atomically_with};
+pub use recording_input::open as open_recording;
 
 /// Counts the heap in use for `--overall-memory-limit` and the experiments' peak memory
 /// (`memory.rs`). Declared by the library, so that whoever calls [`run`] (the executable,

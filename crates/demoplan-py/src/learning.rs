@@ -1,8 +1,11 @@
-//! The learning side for Python: the operator library (`learn::Library`), its levels
-//! and domains, Algorithm 1 (`slim::solve`), and recordings read as arrays. Conversions
-//! only; the library crates compute everything.
+//! The learning side for Python: the operator library (`learn::Library`), learning into
+//! it (`learn::Update`), its levels and domains, Algorithm 1 (`slim::solve`), simulated
+//! demonstrations (`simulate::study`), tower problems (`learn::Tower`), and recordings
+//! read as arrays. Conversions only; the library crates compute everything, and bad
+//! input is reported with the command line's renderers, as its commands report it.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
 
 use demoplan_cli::{ExitCode, Failure};
 use pyo3::prelude::*;
@@ -264,4 +267,206 @@ pub fn read_poses(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Poses> {
         Ok((names, times, poses))
     });
     answer.map_err(|f| failure_from(py, f))
+}
+
+/// Learns the recordings `files` into `library` as `demoplan learn` does
+/// ([`learn::Update`]), segmenting them as it does by default (Unity logs and bags
+/// imported with `mapping`, ARFF tables as they are), with its checks and its errors.
+/// The update writes `folder`/library.json (a folder of the caller's own): the library to
+/// add to is written there first when it holds anything. Returns the library learned and
+/// the log `demoplan learn` prints (what was skipped, ARFF warnings, a line per
+/// recording, the summary table, what was written). The GIL is released.
+#[pyfunction]
+#[pyo3(name = "learn", signature = (library, files, folder, mapping=None))]
+pub fn learn_recordings(
+    py: Python<'_>,
+    library: &PyLibrary,
+    files: Vec<PathBuf>,
+    folder: PathBuf,
+    mapping: Option<PathBuf>,
+) -> PyResult<(PyLibrary, String)> {
+    let answer = py.detach(|| learn_into(&library.inner, &files, &folder, mapping.as_deref()));
+    answer
+        .map(|(inner, log)| (PyLibrary { inner }, log))
+        .map_err(|f| failure_from(py, f))
+}
+
+fn learn_into(
+    library: &learn::Library,
+    paths: &[PathBuf],
+    folder: &Path,
+    mapping: Option<&Path>,
+) -> Result<(learn::Library, String), Failure> {
+    let out = folder.join("library.json");
+    let start_from = library.segments() > 0 || library.recordings().next().is_some();
+    if start_from {
+        demoplan_cli::write_atomically(&out, &library.to_json())?;
+    }
+    let update = learn::Update {
+        library: start_from.then_some(out.as_path()),
+        out: &out,
+        lambda: Some(library.lambda),
+        grouping: None,
+        // `demoplan learn`'s default; the folder is the caller's, so no other learner
+        // holds its lock.
+        lock_timeout: Some(Duration::from_secs(10)),
+    };
+    let before = update.read()?;
+    let inputs = learn::learning_inputs(paths).map_err(|e| match e {
+        learn::InputsError::Open(e) => demoplan_cli::file_failure(learn::FileError::Open {
+            path: PathBuf::new(),
+            error: e,
+        }),
+        e => Failure::plain(ExitCode::USAGE, e),
+    })?;
+    let mut log: String = inputs.notes.iter().map(|n| format!("{n}\n")).collect();
+    let config = grounding::GroundingConfig::default();
+    let tree = segment::ActivityTree::table_one();
+    let mut warnings = String::new();
+    let segment = |path: &Path| {
+        if segment::is_arff_file(path) {
+            learn::segment_arff(path, &tree, config.min_duration, &mut |w| {
+                warnings.push_str(&format!(
+                    "warning: {}:{}: {}\n",
+                    path.display(),
+                    w.line,
+                    w.message
+                ));
+            })
+            .map_err(demoplan_cli::file_failure)
+        } else {
+            let mut reader = demoplan_cli::open_recording(path, mapping)?;
+            learn::segment_reader(&mut reader, &config, &tree, &mut ()).map_err(|error| {
+                demoplan_cli::file_failure(learn::FileError::Recording {
+                    path: path.to_path_buf(),
+                    error,
+                })
+            })
+        }
+    };
+    let mut waited = String::new();
+    let updated = update.run(before, &inputs.files, segment, |w| {
+        waited = format!("{w}\n");
+    })?;
+    let learned = updated.library;
+    log.push_str(&warnings);
+    log.push_str(&waited);
+    log.push_str(&updated.log);
+    log.push_str(&learn::summary_table(&learned));
+    log.push_str(&format!(
+        "wrote {} ({} operators from {} activities of {} recordings)\n",
+        out.display(),
+        learned.len(),
+        learned.segments(),
+        learned.recordings().count()
+    ));
+    Ok((learned, log))
+}
+
+/// Simulated demonstrations as `demoplan simulate -o out` writes them (default
+/// parameters): each recording with its ground truth beside it, written whole or not
+/// at all, and the manifest; returns the recordings' file names. The GIL is released.
+#[pyfunction]
+#[pyo3(name = "simulate", signature = (out, participants, per_participant, seed, cubes=None))]
+pub fn simulate_study(
+    py: Python<'_>,
+    out: PathBuf,
+    participants: u32,
+    per_participant: u32,
+    seed: u64,
+    cubes: Option<u32>,
+) -> PyResult<Vec<String>> {
+    let answer = py.detach(|| -> Result<Vec<String>, Failure> {
+        let mut params = simulate::SimParams::default();
+        if let Some(c) = cubes {
+            params.cubes = c;
+        }
+        let study = simulate::study(&params, seed, participants, per_participant)
+            // The error names the parameter (`participants`, `per_participant`,
+            // `cubes`), which the Python function's are named after.
+            .map_err(|e| Failure::plain(ExitCode::USAGE, e))?;
+        std::fs::create_dir_all(&out).map_err(|e| {
+            Failure::plain(
+                ExitCode::CRITICAL_ERROR,
+                format!("cannot create {}: {e}", out.display()),
+            )
+        })?;
+        let mut written = Vec::new();
+        for demo in &study.demonstrations {
+            let path = out.join(demo.recording_name());
+            // The truth is rendered beside the frames, so it is kept until the recording
+            // is in place; it is a small part of the recording's size.
+            let mut truth = Vec::new();
+            let mut frames = None;
+            demoplan_cli::write_atomically_with(&path, |file| {
+                frames = Some(demo.write(file, &mut truth)?);
+                Ok(())
+            })?;
+            demoplan_cli::write_atomically_with(&out.join(demo.truth_name()), |file| {
+                file.write_all(&truth)
+            })?;
+            written.push(frames.ok_or_else(|| {
+                Failure::plain(
+                    ExitCode::CRITICAL_ERROR,
+                    format!("cannot write {}", path.display()),
+                )
+            })?);
+        }
+        let manifest = simulate::manifest(&study, seed, &params, &written);
+        demoplan_cli::write_atomically(&out.join(simulate::MANIFEST), &manifest)?;
+        Ok(study
+            .demonstrations
+            .iter()
+            .map(|d| d.recording_name())
+            .collect())
+    });
+    answer.map_err(|f| failure_from(py, f))
+}
+
+/// A tower problem's PDDL text as `demoplan problem` writes it: the cubes of `tower`
+/// (comma-separated, bottom first) or the paper's goal `paper_goal`, on a table of
+/// `cubes` cubes (2 to 64) with `hands` hands (1 or 2).
+#[pyfunction]
+#[pyo3(signature = (tower=None, paper_goal=None, cubes=None, hands=None))]
+pub fn tower_problem(
+    py: Python<'_>,
+    tower: Option<String>,
+    paper_goal: Option<usize>,
+    cubes: Option<usize>,
+    hands: Option<usize>,
+) -> PyResult<String> {
+    let within =
+        |name: &str, value: Option<usize>, low: usize, high: usize, default: usize| match value {
+            None => Ok(default),
+            Some(v) if (low..=high).contains(&v) => Ok(v),
+            Some(v) => Err(Failure::plain(
+                ExitCode::USAGE,
+                format!("{name}: {v} is not in {low}..={high}"),
+            )),
+        };
+    let text = (|| -> Result<String, Failure> {
+        let scene = learn::Scene::with_hands(
+            within("cubes", cubes, 2, 64, learn::DEFAULT_CUBES)?,
+            within("hands", hands, 1, 2, learn::DEFAULT_HANDS.len())?,
+        );
+        let tower = match (&tower, paper_goal) {
+            (Some(list), None) => Ok(learn::Tower::listed(list)),
+            (None, Some(n)) => learn::Tower::paper_goal(n),
+            _ => {
+                return Err(Failure::plain(
+                    ExitCode::USAGE,
+                    "give the goal with tower or paper_goal, one of them",
+                ))
+            }
+        };
+        tower.and_then(|t| t.problem_text(&scene)).map_err(|e| {
+            let message = match &e {
+                learn::TowerError::NoPaperGoal(n) => format!("paper_goal {n}: {e}"),
+                learn::TowerError::TooShort => format!("{e}: tower [\"c1\", \"c2\"]"),
+                _ => e.to_string(),
+            };
+            Failure::plain(ExitCode::USAGE, message)
+        })
+    })();
+    text.map_err(|f| failure_from(py, f))
 }

@@ -285,5 +285,8 @@ fn _demoplan(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<learning::PyLibrary>()?;
     m.add_function(wrap_pyfunction!(learning::solve, m)?)?;
     m.add_function(wrap_pyfunction!(learning::read_poses, m)?)?;
+    m.add_function(wrap_pyfunction!(learning::learn_recordings, m)?)?;
+    m.add_function(wrap_pyfunction!(learning::simulate_study, m)?)?;
+    m.add_function(wrap_pyfunction!(learning::tower_problem, m)?)?;
     Ok(())
 }

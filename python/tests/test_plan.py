@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pathlib
+import signal
 import threading
 import time
 import _thread
@@ -115,7 +116,11 @@ def test_plan_honours_its_memory_limit() -> None:
 
 def test_ctrl_c_stops_the_run_through_the_cancel_flag() -> None:
     # What Ctrl-C does: SIGINT's handler raises KeyboardInterrupt in the main thread,
-    # which the extension sees while it waits for the planning thread.
+    # which the extension sees while it waits for the planning thread. Python installs
+    # that handler only if SIGINT was not ignored when it started, and a shell's
+    # background job (a CI script started with `&`) starts with it ignored, where
+    # interrupt_main does nothing: install it as an interactive session has it.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(0.5, _thread.interrupt_main)
     started = time.monotonic()
     timer.start()
@@ -124,6 +129,7 @@ def test_ctrl_c_stops_the_run_through_the_cancel_flag() -> None:
             demoplan.plan(BLOCKS_DOMAIN, reverse_tower(13), search="astar(blind())", time_limit=60.0)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
     # Stopped by the flag, long before the 60 s limit (a loose bound).
     assert time.monotonic() - started < 10.0
     # The next run is not cancelled by a stale flag.

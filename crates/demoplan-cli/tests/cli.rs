@@ -1928,7 +1928,8 @@ fn an_unknown_planner_is_a_command_line_mistake_that_names_the_planners() {
     );
     let err = stderr_text(&out);
     assert!(
-        err.contains("--planner lama: expected demoplan or fast-downward"),
+        err.contains("invalid value 'lama' for '--planner <PLANNER>'")
+            && err.contains("[possible values: demoplan, fast-downward]"),
         "{err}"
     );
     assert!(!tmp.join("sas_plan").exists());

@@ -11,8 +11,8 @@ use learn::{
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output::write_atomically;
+use slim::ExitCode;
 
 /// Reads a library file: a missing file is a command line error (36), a damaged or newer
 /// one an input error (31) that names the line.

@@ -31,6 +31,7 @@
 
 mod cell;
 mod children;
+mod closing;
 mod findings;
 mod lab;
 mod memory_limit;

@@ -527,8 +527,15 @@ fn limit_reached(
     // Stop before the state table's next doubling if it would not fit, rather than
     // after it: the limit then holds for the process's peak, not only after the step.
     let growth = registry.imminent_growth_bytes() as u64;
-    (growth > 0 && limits.would_exceed(growth, || own_bytes() as u64))
-        .then_some(Outcome::MemoryLimit)
+    if growth > 0 && limits.would_exceed(growth, || own_bytes() as u64) {
+        return Some(Outcome::MemoryLimit);
+    }
+    // Likewise in time: the doubling rehashes every state at once, seconds on a large
+    // table, and no check runs inside it. Fewer new states than the check interval
+    // are left before it, so it may come before the next check.
+    let rehash = registry.growth_time_within(MAX_CHECK_INTERVAL as usize + 1)?;
+    let deadline = limits.deadline?;
+    (Instant::now() + rehash > deadline).then_some(Outcome::TimeLimit)
 }
 
 /// The outcome the limits call for, if any.
@@ -668,6 +675,41 @@ pub(crate) mod tests {
         let result = hmax_search(&task).unwrap();
         assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 2));
         assert_eq!(result.statistics.dead_ends, 1);
+    }
+
+    #[test]
+    fn a_search_stops_before_a_rehash_that_would_end_past_its_deadline() {
+        let mut registry = StateRegistry::new(1);
+        let mut i = 0u64;
+        while registry.len() < 1000 || registry.insertions_before_growth() > 10 {
+            registry.insert(&[i]);
+            i += 1;
+        }
+        let info = StateInfo {
+            nodes: SegmentedVec::new(),
+        };
+        let open = OpenList::new();
+        let within = |seconds| SearchLimits {
+            deadline: Some(Instant::now() + Duration::from_secs(seconds)),
+            ..SearchLimits::default()
+        };
+        // The last growth moved half the states in 4 s: the next will take about 8 s.
+        registry.pretend_last_growth(Duration::from_secs(4), registry.len() / 2);
+        let stop = |limits: &SearchLimits| {
+            limit_reached(&mut LimitCheck::new(), limits, &registry, &info, &open)
+        };
+        assert_eq!(stop(&within(5)), Some(Outcome::TimeLimit));
+        assert_eq!(stop(&within(60)), None);
+        // Far from a growth, the same deadline lets the search go on.
+        registry.insert(&[i]);
+        let mut far = registry.clone();
+        while far.insertions_before_growth() <= 65 {
+            i += 1;
+            far.insert(&[i]);
+        }
+        far.pretend_last_growth(Duration::from_secs(4), far.len() / 2);
+        let go_on = limit_reached(&mut LimitCheck::new(), &within(5), &far, &info, &open);
+        assert_eq!(go_on, None);
     }
 
     #[test]

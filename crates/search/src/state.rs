@@ -9,6 +9,7 @@
 //! the arena.
 
 use std::hash::Hasher;
+use std::time::{Duration, Instant};
 
 use hashbrown::HashTable;
 use rustc_hash::FxHasher;
@@ -174,6 +175,10 @@ pub struct StateRegistry {
     arena: SegmentedArena,
     len: u32,
     table: HashTable<StateId>,
+    /// The last growth of `table`: how long it took and how many ids it moved. A growth
+    /// rehashes every id through the arena at once (seconds on tens of millions of
+    /// states), so the search asks how long the next one will take before it starts it.
+    last_growth: Option<(Duration, usize)>,
 }
 
 impl StateRegistry {
@@ -184,6 +189,7 @@ impl StateRegistry {
             arena: SegmentedArena::new(words_per_state),
             len: 0,
             table: HashTable::new(),
+            last_growth: None,
         }
     }
 
@@ -221,8 +227,14 @@ impl StateRegistry {
         self.len += 1;
         self.arena.push(packed);
         let arena = &self.arena;
+        // The clock is read only when this insertion grows the table.
+        let moved = self.table.len();
+        let growing = (moved > 0 && moved == self.table.capacity()).then(Instant::now);
         self.table
             .insert_unique(hash, id, |&other| hash_words(arena.get(other.index())));
+        if let Some(started) = growing {
+            self.last_growth = Some((started.elapsed(), moved));
+        }
         Some((id, true))
     }
 
@@ -252,6 +264,33 @@ impl StateRegistry {
         } else {
             0
         }
+    }
+
+    /// How long the lookup table's growth will take, estimated from the last growth's
+    /// time per id moved, if fewer than `insertions` insertions are left before it
+    /// (else, or before any measured growth, `None`). A search that checks its limits
+    /// every so many new states asks this with that interval, so that it stops rather
+    /// than start a rehash that would end past its deadline.
+    pub fn growth_time_within(&self, insertions: usize) -> Option<Duration> {
+        let left = self.table.capacity().saturating_sub(self.table.len());
+        let (took, moved) = self.last_growth?;
+        if left >= insertions {
+            return None;
+        }
+        let per_id = took.as_secs_f64() / moved as f64;
+        Some(Duration::from_secs_f64(per_id * self.table.len() as f64))
+    }
+
+    /// Tests of the search's stop: pretend the last growth took `took` for `moved` ids.
+    #[cfg(test)]
+    pub(crate) fn pretend_last_growth(&mut self, took: Duration, moved: usize) {
+        self.last_growth = Some((took, moved));
+    }
+
+    /// Insertions left before the lookup table grows.
+    #[cfg(test)]
+    pub(crate) fn insertions_before_growth(&self) -> usize {
+        self.table.capacity() - self.table.len()
     }
 }
 
@@ -283,6 +322,34 @@ mod tests {
         assert!(doublings >= 5);
         // Announced only near a doubling: a sixteenth of the states at most, roughly.
         assert!(announced < 100_000 / 8, "{announced}");
+    }
+
+    /// The time of the next growth is estimated only when it is within the asked number
+    /// of insertions, from the last growth's time per id, so for about twice the ids.
+    #[test]
+    fn the_state_table_estimates_its_next_growth_from_the_last() {
+        let mut registry = StateRegistry::new(1);
+        assert_eq!(
+            registry.growth_time_within(usize::MAX),
+            None,
+            "no growth measured yet"
+        );
+        let mut estimates = 0;
+        for i in 0..200_000u64 {
+            let left = registry.insertions_before_growth();
+            let estimate = registry.growth_time_within(65);
+            if registry.last_growth.is_some() {
+                assert_eq!(estimate.is_some(), left < 65, "state {i}: {left} left");
+            }
+            if let (Some(estimate), Some((took, moved))) = (estimate, registry.last_growth) {
+                estimates += 1;
+                let ratio = registry.len() as f64 / moved as f64;
+                let expected = took.as_secs_f64() * ratio;
+                assert!((estimate.as_secs_f64() - expected).abs() <= 1e-9 + expected * 1e-6);
+            }
+            registry.insert(&[i]);
+        }
+        assert!(estimates > 0);
     }
 
     #[test]

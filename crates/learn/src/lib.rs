@@ -44,8 +44,8 @@ pub use domain::{
     DEFAULT_HANDS,
 };
 pub use files::{
-    arff_reader, hand_table, labelled_frames, read_truth, segment_arff, segment_path, FileError,
-    Labelled, ARFF_FRAME_RATE,
+    arff_reader, hand_table, labelled_frames, nominal_dataset, read_truth, segment_arff,
+    segment_path, FileError, Labelled, ARFF_FRAME_RATE,
 };
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};

@@ -100,7 +100,7 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
 /// The failure for an ARFF error, shown on its line of the file. The file is read again
 /// for that: tables are read a row at a time and no text is kept. A file that cannot be
 /// read again (or is not UTF-8 text) gets the message without its line shown.
-pub fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
+fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
     match std::fs::read_to_string(path) {
         Ok(text) => text_failure(path, &text, "segment::arff", e),
         Err(_) => Failure::plain(

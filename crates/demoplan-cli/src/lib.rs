@@ -21,16 +21,14 @@ mod cli;
 mod commands;
 mod diagnostic;
 mod input;
-mod memory;
 mod output;
 mod progress;
 mod recording_input;
 
 pub use slim::ExitCode;
 // For the Python extension's in-process calls: failures rendered as the command line
-// renders them, and the counting allocator's readings (the extension's Rust heap).
+// renders them.
 pub use diagnostic::Failure;
-pub use memory::{heap_in_use, probe as memory_probe};
 // For the Python extension's `learn`, `simulate` and `tower_problem`, which call the
 // library crates as the commands do: bad demonstration files reported as the command
 // line reports them (file, line, field), and files written whole or not at all.
@@ -39,11 +37,11 @@ pub use output::{write_atomically, write_atomically_with};
 pub use recording_input::open as open_recording;
 
 /// Counts the heap in use for `--overall-memory-limit` and the experiments' peak memory
-/// (`memory.rs`). Declared by the library, so that whoever calls [`run`] (the executable,
+/// ([`task::memory`]; `slim::MemoryProbe::counting` reads it). Declared by the library, so that whoever calls [`run`] (the executable,
 /// the Python extension) gets the limits; a program linking this crate cannot declare
 /// another global allocator.
 #[global_allocator]
-static ALLOCATOR: memory::CountingAllocator = memory::CountingAllocator;
+static ALLOCATOR: task::memory::CountingAllocator = task::memory::CountingAllocator;
 
 /// Runs the command line `argv` (its first item is the program's name) and returns the
 /// exit code the executable would exit with, after printing what it prints.

@@ -25,21 +25,11 @@ pub fn mapping(path: Option<&Path>, format: import::Format) -> Result<import::Ma
         return Ok(import::Mapping::default_for(format));
     };
     let text = crate::input::read_text(path)?;
-    import::Mapping::from_toml(&text, format).map_err(|e| {
-        let message = if e.key.is_empty() {
-            e.message.clone()
-        } else {
-            format!("key `{}`: {}", e.key, e.message)
-        };
-        crate::commands::demo_input::text_failure(
-            path,
-            &text,
-            "import::mapping",
-            e.line,
-            e.column,
-            &e.key,
-            &message,
-        )
+    import::Mapping::from_toml(&text, format).map_err(|mut e| {
+        if !e.field.is_empty() {
+            e.message = format!("key `{}`: {}", e.field, e.message);
+        }
+        crate::commands::demo_input::text_failure(path, &text, "import::mapping", &e)
     })
 }
 

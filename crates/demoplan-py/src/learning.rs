@@ -193,7 +193,7 @@ pub fn solve(
         let limits = slim::RunLimits {
             time,
             memory_bytes: memory_limit,
-            memory: Some(demoplan_cli::memory_probe()),
+            memory: Some(slim::MemoryProbe::counting()),
         };
         let solved = slim::solve(
             &library.inner,

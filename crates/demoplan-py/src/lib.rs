@@ -51,7 +51,7 @@ fn plan(
     let limits = slim::RunLimits {
         time,
         memory_bytes: memory_limit,
-        memory: Some(demoplan_cli::memory_probe()),
+        memory: Some(slim::MemoryProbe::counting()),
     };
     let mut task_limits = limits.starting_at(start);
     task_limits.cancel = Some(flag.0);

@@ -203,19 +203,8 @@ impl Default for InTouchConfig {
 }
 
 /// A configuration file that cannot be used: where (1-based line and column, 0 when
-/// unknown) and which field.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("line {line}, field `{field}`: {message}")]
-pub struct ConfigError {
-    /// 1-based line (0: the whole file).
-    pub line: usize,
-    /// 1-based column (0: unknown).
-    pub column: usize,
-    /// The field, as a dotted path (`hand_open.close_above`), empty when unknown.
-    pub field: String,
-    /// What is wrong.
-    pub message: String,
-}
+/// unknown) and which field (a dotted path, `hand_open.close_above`).
+pub type ConfigError = recording::TextError;
 
 impl GroundingConfig {
     /// Reads a configuration from TOML text; fields left out keep their defaults.

@@ -272,19 +272,9 @@ struct BagFile {
     objects: Option<ObjectListFields>,
 }
 
-/// A mapping file that could not be read: where, which key, and what is wrong.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{message}")]
-pub struct MappingError {
-    /// 1-based line (0: the file as a whole).
-    pub line: usize,
-    /// 1-based column (0: the whole line).
-    pub column: usize,
-    /// The key, as a dotted path (`entity[2].size`), when known.
-    pub key: String,
-    /// What is wrong.
-    pub message: String,
-}
+/// A mapping file that could not be read: where, which key (the field, a dotted path
+/// such as `entity[2].size`), and what is wrong.
+pub type MappingError = recording::TextError;
 
 /// How a source name resolved.
 #[derive(Debug, Clone, PartialEq)]
@@ -576,7 +566,7 @@ fn check_rule(text: &str, i: usize, rule: &EntityRule) -> Result<(), MappingErro
     let at = format!("entity[{i}]");
     let fail = |key: &str, message: String| {
         let mut e = key_error(text, "entity", message);
-        e.key = format!("{at}{key}");
+        e.field = format!("{at}{key}");
         e
     };
     match (&rule.name, &rule.glob) {
@@ -634,7 +624,7 @@ fn toml_error(text: &str, e: &toml::de::Error) -> MappingError {
     MappingError {
         line,
         column,
-        key,
+        field: key,
         message,
     }
 }
@@ -658,7 +648,7 @@ fn key_error(text: &str, key: &str, message: String) -> MappingError {
     MappingError {
         line,
         column: 0,
-        key: key.to_string(),
+        field: key.to_string(),
         message,
     }
 }
@@ -749,13 +739,13 @@ as = "big"
     #[test]
     fn unknown_keys_name_line_and_key() {
         let e = Mapping::from_toml("axes = \"unity\"\ncolour = 3\n", Format::Unity).unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (2, "colour"));
+        assert_eq!((e.line, e.field.as_str()), (2, "colour"));
         let e = Mapping::from_toml("[bag]\nclock = \"/tf\"\n", Format::Ros1).unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (2, "clock"));
+        assert_eq!((e.line, e.field.as_str()), (2, "clock"));
         let e = Mapping::from_toml("axes = [\"x\", \"x\", \"z\"]\n", Format::Ros1).unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (1, "axes"));
+        assert_eq!((e.line, e.field.as_str()), (1, "axes"));
         assert!(e.message.contains("signed permutation"), "{}", e.message);
         let e = Mapping::from_toml("[[entity]]\nglob = \"*\"\n", Format::Ros1).unwrap_err();
-        assert_eq!((e.line, e.key.as_str()), (1, "entity[0].role"));
+        assert_eq!((e.line, e.field.as_str()), (1, "entity[0].role"));
     }
 }

@@ -69,6 +69,25 @@ pub fn arff_reader(path: &Path) -> Result<ArffReader<BufReader<File>>, FileError
     ArffReader::new(BufReader::new(file)).map_err(arff_error(path))
 }
 
+/// An ARFF file that is a nominal data set, not a hand-state table
+/// ([`segment::is_hand_state`]), read whole for C4.5 with `class` as its class (default:
+/// the last attribute); `warn` sees what the reader accepted. `None` for a hand-state
+/// table: its frames are learned by their activity.
+pub fn nominal_dataset(
+    path: &Path,
+    class: Option<&str>,
+    warn: &mut dyn FnMut(&ArffWarning),
+) -> Result<Option<segment::Dataset>, FileError> {
+    let reader = arff_reader(path)?;
+    if segment::is_hand_state(reader.attributes()) {
+        return Ok(None);
+    }
+    let table = reader.into_table().map_err(arff_error(path))?;
+    let (data, warnings) = table.dataset(class).map_err(arff_error(path))?;
+    warnings.iter().for_each(warn);
+    Ok(Some(data))
+}
+
 /// The first pass over an ARFF hand-state table: its objects and labels, and the warnings
 /// about what the reader accepted (`table.warnings`).
 pub fn hand_table(path: &Path) -> Result<HandTable, FileError> {

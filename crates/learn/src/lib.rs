@@ -44,8 +44,8 @@ pub use domain::{
     DEFAULT_HANDS,
 };
 pub use files::{
-    arff_reader, hand_table, labelled_frames, read_truth, segment_arff, segment_path, FileError,
-    Labelled, ARFF_FRAME_RATE,
+    arff_reader, hand_table, labelled_frames, nominal_dataset, read_truth, segment_arff,
+    segment_path, FileError, Labelled, ARFF_FRAME_RATE,
 };
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};
@@ -56,8 +56,8 @@ pub use library::{
 pub use lock::{lock_path, resolve_target, LockError, Waiting, WriteLock};
 pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
 pub use pipeline::{
-    activities, add_frames, recording_hash, segment_frames, segment_reader, segment_with, Grouping,
-    HandsGrounded, Observer, Segmented, StateAt,
+    activities, add_frames, recording_hash, scene_at_frame, segment_frames, segment_reader,
+    segment_with, Grouping, HandsGrounded, Observer, Segmented, StateAt,
 };
 pub use timeline::{activity_color, timeline, Signals};
 pub use update::{LibraryFileError, Update, UpdateError, Updated};

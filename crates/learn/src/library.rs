@@ -557,50 +557,7 @@ fn sort_provenance(p: &mut [Provenance]) {
 
 /// A library file that cannot be read: where (1-based line and column; 0 when unknown),
 /// which field, and what is wrong.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct LibraryError {
-    /// Line, 1-based (0: unknown).
-    pub line: usize,
-    /// Column, 1-based (0: the whole line).
-    pub column: usize,
-    /// The field.
-    pub field: String,
-    /// What is wrong.
-    pub message: String,
-}
-
-impl LibraryError {
-    /// An error at the first place `needle` occurs in `text` (line 0 when it does not).
-    fn at(text: &str, needle: &str, field: &str, message: String) -> LibraryError {
-        let (line, column) = match text.find(needle) {
-            Some(offset) => {
-                let before = &text[..offset];
-                let line = before.matches('\n').count().saturating_add(1);
-                let line_start = before.rfind('\n').map_or(0, |i| i.saturating_add(1));
-                let column = offset.saturating_sub(line_start).saturating_add(1);
-                (line, column)
-            }
-            None => (0, 0),
-        };
-        LibraryError {
-            line,
-            column,
-            field: field.to_string(),
-            message,
-        }
-    }
-}
-
-impl std::fmt::Display for LibraryError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        if self.line > 0 {
-            write!(f, "line {}: ", self.line)?;
-        }
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for LibraryError {}
+pub type LibraryError = recording::TextError;
 
 fn runs_grouping() -> String {
     Grouping::Runs.name().to_string()

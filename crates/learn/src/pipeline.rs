@@ -9,6 +9,7 @@ use grounding::{FactSpace, GroundedFrame, Grounder, GroundingConfig};
 use recording::{Frame, Header};
 use segment::{Activity, ActivityTree, Segment, Segmenter, TableSegments};
 
+use crate::domain::Scene;
 use crate::hash::StableHasher;
 use crate::library::{Added, Library, RecordingInfo};
 
@@ -68,6 +69,25 @@ impl Observer for StateAt {
             self.state = Some(g.state.clone());
         }
     }
+}
+
+/// The scene of frame `wanted` (0-based) of a recording, grounded with `config`
+/// ([`Scene::from_state`]), and how many frames the recording has: no scene when it has
+/// fewer. The recording is read to its end (and segmented with Table 1), so a damaged
+/// line after the frame is still an error.
+pub fn scene_at_frame<R: BufRead>(
+    reader: &mut recording::Reader<R>,
+    config: &GroundingConfig,
+    wanted: u64,
+) -> Result<(Option<Scene>, u64), recording::ReadError> {
+    let mut at = StateAt {
+        wanted,
+        state: None,
+    };
+    let segmented = segment_reader(reader, config, &ActivityTree::table_one(), &mut at)?;
+    let scene =
+        (at.state).map(|state| Scene::from_state(&segmented.header, &segmented.space, &state));
+    Ok((scene, segmented.frames))
 }
 
 /// Keeps every grounded frame's hand facts, to be joined with per-frame labels such as

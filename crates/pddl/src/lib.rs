@@ -41,7 +41,7 @@ pub use files::domain_file_candidates;
 pub use parser::PddlFile;
 pub use plan::{parse_plan, write_plan, CostKind, Plan, PlanError, PlanErrorKind, Step};
 pub use span::Span;
-pub use summary::SummaryRow;
+pub use summary::{summary_text, SummaryRow};
 
 /// Parses and checks a domain: its syntax, and that every name it uses is declared.
 pub fn parse_domain(source: &str) -> Result<Domain, PddlError> {

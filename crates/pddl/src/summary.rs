@@ -6,6 +6,28 @@ use crate::{Domain, InitEntry, Problem};
 /// A summary row: what is counted, and its value as text.
 pub type SummaryRow = (&'static str, String);
 
+/// What `demoplan check` prints: the domain (named with `domain_file`) and its rows, then
+/// the problem (named with its file) and its rows, a key padded to 22 columns a line.
+pub fn summary_text(
+    domain: &Domain,
+    domain_file: &str,
+    problem: Option<(&Problem, &str)>,
+) -> String {
+    let mut out = String::new();
+    let mut line = |key: &str, value: &str| out.push_str(&format!("{key:<22} {value}\n"));
+    line("domain", &format!("{} ({domain_file})", domain.name.text));
+    for (key, value) in domain.summary(problem.map(|(p, _)| p)) {
+        line(key, &value);
+    }
+    if let Some((problem, file)) = problem {
+        line("problem", &format!("{} ({file})", problem.name.text));
+        for (key, value) in problem.summary() {
+            line(key, &value);
+        }
+    }
+    out
+}
+
 impl Domain {
     /// Requirements declared and used (with `problem`, what the pair uses), then the
     /// number of distinct types, constants, predicates, functions and actions.

@@ -60,6 +60,7 @@ mod model;
 mod parser;
 mod reader;
 mod summary;
+mod text_error;
 mod writer;
 
 pub use activity::Activity;
@@ -72,6 +73,7 @@ pub use model::{
 };
 pub use reader::{Reader, MAX_LINE_BYTES};
 pub use summary::{Summary, GAP};
+pub use text_error::TextError;
 pub use writer::Writer;
 
 /// The `format` field of a recording's header.

@@ -69,19 +69,9 @@ pub struct DecisionTree {
     pub root: Node,
 }
 
-/// A tree file (or tree) that cannot be used: where, and what.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("line {line}, field `{field}`: {message}")]
-pub struct TreeError {
-    /// 1-based line in the JSON text (0 when unknown).
-    pub line: usize,
-    /// 1-based column (0 when unknown).
-    pub column: usize,
-    /// The field, as a path (`root.branches[1].node.class`).
-    pub field: String,
-    /// What is wrong.
-    pub message: String,
-}
+/// A tree file (or tree) that cannot be used: where, and what; the field is a path
+/// (`root.branches[1].node.class`).
+pub type TreeError = recording::TextError;
 
 /// The `format` field of a tree file.
 pub const TREE_FORMAT: &str = "demoplan-tree";

@@ -150,6 +150,18 @@ pub struct MemoryProbe {
     pub peak: fn() -> u64,
 }
 
+impl MemoryProbe {
+    /// The readings of [`task::memory::CountingAllocator`], for a program that declares
+    /// it as its global allocator (the command line and the Python extension do).
+    pub fn counting() -> MemoryProbe {
+        MemoryProbe {
+            in_use: task::memory::heap_in_use,
+            reset: task::memory::reset_peak,
+            peak: task::memory::peak_heap,
+        }
+    }
+}
+
 /// The limits every planning run gets, each counted from that run's own start: a time
 /// limit (translation, heuristic construction and search together) and a memory limit
 /// on the heap the run itself allocates. What the process held before the run (the

@@ -27,6 +27,7 @@
 //! ```
 
 pub mod limits;
+pub mod memory;
 pub mod sas_file;
 pub mod units;
 

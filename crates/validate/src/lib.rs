@@ -40,6 +40,7 @@ pub use execute::{
     validate, CostModel, GroundAtom, GroundLiteral, Reason, Report, StepFailure, ValidateError,
     Verdict,
 };
+pub use val_text::val_text_of_file;
 
 #[cfg(test)]
 mod tests;

@@ -2,7 +2,30 @@
 //! or the failing step with VAL's repair advice, or the unsatisfied goal, and "Plan
 //! invalid", so that scripts written for VAL read demoplan's output.
 
-use crate::execute::{GroundLiteral, Reason, Report, Verdict};
+use pddl::{Domain, Problem};
+
+use crate::execute::{validate, GroundLiteral, Reason, Report, ValidateError, Verdict};
+
+/// What VAL prints after "Checking plan" for the plan file `name` holding `text`, and
+/// whether the plan is valid: "Bad plan description!" with the line at fault for a plan
+/// that does not parse, the [`Report::val_text`] of [`validate`] otherwise.
+pub fn val_text_of_file(
+    domain: &Domain,
+    problem: &Problem,
+    name: &str,
+    text: &str,
+) -> Result<(String, bool), ValidateError> {
+    match pddl::parse_plan(text) {
+        Err(e) => Ok((
+            format!(
+                "Bad plan description!\n{name}:{}: {}\nPlan invalid\n",
+                e.line, e.kind
+            ),
+            false,
+        )),
+        Ok(plan) => validate(domain, problem, &plan).map(|r| (r.val_text(), r.is_valid())),
+    }
+}
 
 impl Report {
     /// The lines VAL's `validate` prints for this plan, after its "Checking plan" line.

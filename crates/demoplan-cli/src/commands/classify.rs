@@ -72,12 +72,9 @@ fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
     // A nominal data set that is not a hand-state table: learn it as it is.
     if let [path] = args.files.as_slice() {
         if segment::is_arff_file(path) {
-            let reader = learn::arff_reader(path).map_err(demo_input::file_failure)?;
-            if !segment::is_hand_state(reader.attributes()) {
-                let arff = |e| demo_input::arff_failure(path, &e);
-                let table = reader.into_table().map_err(arff)?;
-                let (data, warnings) = table.dataset(args.class.as_deref()).map_err(arff)?;
-                warnings.iter().for_each(|w| demo_input::warn(path, w));
+            let mut warn = |w: &segment::ArffWarning| demo_input::warn(path, w);
+            let nominal = learn::nominal_dataset(path, args.class.as_deref(), &mut warn);
+            if let Some(data) = nominal.map_err(demo_input::file_failure)? {
                 return finish(args, &learner.learn_checked(&data));
             }
         }

@@ -15,51 +15,22 @@ use crate::input;
 use crate::recording_input;
 use slim::ExitCode;
 
-/// An input error (exit 31) at `line` (1-based; 0: none known) and `column` (1-based;
-/// 0: the whole line) of `text`, naming `field`.
-pub fn text_failure(
-    path: &Path,
-    text: &str,
-    code: &'static str,
-    line: usize,
-    column: usize,
-    field: &str,
-    message: &str,
-) -> Failure {
-    let label = if field.is_empty() {
-        "here".to_string()
-    } else {
-        format!("field `{field}`")
-    };
-    let Some(start) = line_start(text, line) else {
-        let what = if field.is_empty() {
-            String::new()
-        } else {
-            format!(", field `{field}`")
-        };
-        return Failure::plain(
-            ExitCode::INPUT_ERROR,
-            format!("{}{what}: {message}", path.display()),
-        );
-    };
-    let rest = &text[start..];
-    let line_text = rest.split('\n').next().unwrap_or("").trim_end_matches('\r');
-    let (offset, width) = if column == 0 {
-        let indent = line_text.len() - line_text.trim_start().len();
-        (indent, line_text.trim().len())
-    } else {
-        let at = (column - 1).min(line_text.len());
-        let token = line_text[at..]
-            .find(|c: char| c.is_whitespace() || c == ',')
-            .unwrap_or(line_text.len() - at);
-        (at, token.max(1).min(line_text.len().saturating_sub(at)))
+/// An input error (exit 31) in `text`, the file at `path`, shown on its line with the
+/// span [`recording::TextError::span`] underlines; without a line, one line naming the
+/// file and the field.
+pub fn text_failure(path: &Path, text: &str, code: &str, e: &recording::TextError) -> Failure {
+    let field = (!e.field.is_empty()).then(|| format!("field `{}`", e.field));
+    let Some(span) = e.span(text) else {
+        let what = field.map_or(String::new(), |f| format!(", {f}"));
+        let message = format!("{}{what}: {}", path.display(), e.message);
+        return Failure::plain(ExitCode::INPUT_ERROR, message);
     };
     let diagnostic = SourceDiagnostic {
         code: code.to_string(),
-        message: message.to_string(),
+        message: e.message.clone(),
         help: None,
-        label,
-        span: (start + offset, width).into(),
+        label: field.unwrap_or_else(|| "here".to_string()),
+        span: span.into(),
         source: NamedSource::new(path.display().to_string(), text.to_string()),
     };
     Failure {
@@ -68,40 +39,20 @@ pub fn text_failure(
     }
 }
 
-fn line_start(text: &str, line: usize) -> Option<usize> {
-    if line == 0 {
-        return None;
-    }
-    let mut start = 0;
-    for _ in 1..line {
-        start += text[start..].find('\n')? + 1;
-    }
-    (start <= text.len()).then_some(start)
-}
-
 /// The grounding configuration: the file's, or the defaults.
 pub fn config(path: Option<&Path>) -> Result<GroundingConfig, Failure> {
     let Some(path) = path else {
         return Ok(GroundingConfig::default());
     };
     let text = input::read_text(path)?;
-    GroundingConfig::from_toml(&text).map_err(|e| {
-        text_failure(
-            path,
-            &text,
-            "grounding::config",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        )
-    })
+    GroundingConfig::from_toml(&text)
+        .map_err(|e| text_failure(path, &text, "grounding::config", &e))
 }
 
 /// A decision tree file.
 pub fn decision_tree(path: &Path) -> Result<DecisionTree, Failure> {
     let text = input::read_text(path)?;
-    DecisionTree::from_json(&text).map_err(|e| tree_failure(path, &text, &e))
+    DecisionTree::from_json(&text).map_err(|e| text_failure(path, &text, "segment::tree", &e))
 }
 
 /// The activity tree: the file's, or the paper's Table 1.
@@ -111,21 +62,8 @@ pub fn activity_tree(path: Option<&Path>) -> Result<ActivityTree, Failure> {
     };
     ActivityTree::new(decision_tree(path)?).map_err(|e| {
         let text = std::fs::read_to_string(path).unwrap_or_default();
-        tree_failure(path, &text, &e)
+        text_failure(path, &text, "segment::tree", &e)
     })
-}
-
-/// The failure for an error in the tree file at `path`, shown on its line of `text`.
-fn tree_failure(path: &Path, text: &str, e: &segment::TreeError) -> Failure {
-    text_failure(
-        path,
-        text,
-        "segment::tree",
-        e.line,
-        e.column,
-        &e.field,
-        &e.message,
-    )
 }
 
 /// The label map: the defaults, with the `[labels]` table of the mapping file on top
@@ -147,32 +85,24 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
         // The mapping keeps no positions: find the label's value in the file again.
         let text = std::fs::read_to_string(path).unwrap_or_default();
         let (line, column) = import::Mapping::label_position(&text, &e.label).unwrap_or((0, 0));
-        text_failure(
-            path,
-            &text,
-            "import::mapping",
+        let field = format!("labels.{}", e.label);
+        let message = e.to_string();
+        let e = recording::TextError {
             line,
             column,
-            &format!("labels.{}", e.label),
-            &e.to_string(),
-        )
+            field,
+            message,
+        };
+        text_failure(path, &text, "import::mapping", &e)
     })
 }
 
 /// The failure for an ARFF error, shown on its line of the file. The file is read again
 /// for that: tables are read a row at a time and no text is kept. A file that cannot be
 /// read again (or is not UTF-8 text) gets the message without its line shown.
-pub fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
+fn arff_failure(path: &Path, e: &segment::ArffError) -> Failure {
     match std::fs::read_to_string(path) {
-        Ok(text) => text_failure(
-            path,
-            &text,
-            "segment::arff",
-            e.line,
-            e.column,
-            &e.field,
-            &e.message,
-        ),
+        Ok(text) => text_failure(path, &text, "segment::arff", e),
         Err(_) => Failure::plain(
             ExitCode::INPUT_ERROR,
             format!(

@@ -87,7 +87,7 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     text.push_str(&import::mappings_used(&mappings));
     print!("{text}");
     if args.peak_heap {
-        eprintln!("peak heap: {} bytes", crate::memory::peak_heap());
+        eprintln!("peak heap: {} bytes", task::memory::peak_heap());
     }
     Ok(ExitCode::SUCCESS)
 }

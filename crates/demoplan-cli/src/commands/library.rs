@@ -24,15 +24,9 @@ fn read_failure(e: LibraryFileError) -> Failure {
     match e {
         LibraryFileError::Io { .. } => Failure::plain(ExitCode::USAGE, e),
         LibraryFileError::NotText { .. } => Failure::plain(ExitCode::INPUT_ERROR, e),
-        LibraryFileError::Library { path, text, error } => demo_input::text_failure(
-            &path,
-            &text,
-            "learn::library",
-            error.line,
-            error.column,
-            &error.field,
-            &error.message,
-        ),
+        LibraryFileError::Library { path, text, error } => {
+            demo_input::text_failure(&path, &text, "learn::library", &error)
+        }
     }
 }
 
@@ -159,28 +153,19 @@ fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
         ));
     };
     let config = demo_input::config(args.config.as_deref())?;
-    let tree = segment::ActivityTree::table_one();
     let wanted = args.frame.unwrap_or(0);
-    let mut at = learn::StateAt {
-        wanted,
-        state: None,
-    };
-    let segmented = demo_input::segment_recording(path, None, &config, &tree, &mut at)?;
-    let Some(state) = at.state else {
-        return Err(Failure::plain(
+    let mut reader = crate::recording_input::open(path, None)?;
+    let (scene, frames) = learn::scene_at_frame(&mut reader, &config, wanted)
+        .map_err(|e| crate::recording_input::recording_failure(path, &e))?;
+    scene.ok_or_else(|| {
+        Failure::plain(
             ExitCode::USAGE,
             format!(
-                "{} has {} frames; --frame {wanted} is not one of them (frames count from 0)",
-                path.display(),
-                segmented.frames
+                "{} has {frames} frames; --frame {wanted} is not one of them (frames count from 0)",
+                path.display()
             ),
-        ));
-    };
-    Ok(Scene::from_state(
-        &segmented.header,
-        &segmented.space,
-        &state,
-    ))
+        )
+    })
 }
 
 pub fn problem(args: ProblemArgs) -> Result<ExitCode, Failure> {

@@ -7,8 +7,9 @@ use std::time::Instant;
 use crate::cli::PlanArgs;
 use crate::commands::translate::{domain_and_problem, read_parsed};
 use crate::diagnostic::Failure;
-use crate::{input, memory, output};
+use crate::{input, output};
 use slim::ExitCode;
+use task::memory;
 use task::units::{parse_memory_limit, parse_time_limit};
 
 /// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or

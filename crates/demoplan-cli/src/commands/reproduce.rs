@@ -82,7 +82,7 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         fast_downward: fast_downward(&args.fast_downward)?,
         seed: args.seed,
         hands: args.hands as usize,
-        memory: Some(crate::memory::probe()),
+        memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
         children: cell_command(args.jobs as usize, memory_limit)?,
     };

@@ -27,7 +27,7 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     let limits = slim::RunLimits {
         time: time_limit,
         memory_bytes: memory_limit,
-        memory: Some(crate::memory::probe()),
+        memory: Some(slim::MemoryProbe::counting()),
     };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;

@@ -54,7 +54,7 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         params,
         time_limit: time_limit(args.limits.time_limit.as_deref())?,
         fast_downward: fast_downward(&args.fast_downward)?,
-        memory: Some(crate::memory::probe()),
+        memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
         children: None,
     };

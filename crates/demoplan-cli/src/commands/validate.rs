@@ -28,32 +28,14 @@ pub fn validate_plans(
     let mut invalid: i32 = 0;
     for (index, (path, text)) in plans.iter().zip(&texts).enumerate() {
         let blank = if index == 0 { "" } else { "\n" };
-        let mut out = format!("{blank}Checking plan: {}\n", path.display());
-        let valid = match pddl::parse_plan(text) {
-            Err(e) => {
-                out.push_str("Bad plan description!\n");
-                out.push_str(&format!("{}:{}: {}\n", path.display(), e.line, e.kind));
-                out.push_str("Plan invalid\n");
-                false
-            }
-            Ok(plan) => match validate::validate(&task.domain, &task.problem, &plan) {
-                Ok(report) => {
-                    out.push_str(&report.val_text());
-                    report.is_valid()
-                }
-                Err(e) => {
-                    print!("{out}");
-                    return Err(Failure::plain(
-                        ExitCode::INPUT_ERROR,
-                        format!("{}: {e}", problem.display()),
-                    ));
-                }
-            },
-        };
-        if !valid {
-            invalid += 1;
-        }
-        print!("{out}");
+        println!("{blank}Checking plan: {}", path.display());
+        let name = path.display().to_string();
+        let (report, valid) = validate::val_text_of_file(&task.domain, &task.problem, &name, text)
+            .map_err(|e| {
+                Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
+            })?;
+        print!("{report}");
+        invalid += i32::from(!valid);
     }
     // VAL exits with the number of invalid plans; beyond 255 it would wrap to success.
     Ok(ExitCode(invalid.min(255)))

@@ -71,19 +71,9 @@ pub struct ArffTable {
     pub rows: Vec<ArffRow>,
 }
 
-/// A file that cannot be read: line, column (1-based; 0 when unknown), field, what.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("line {line}, field `{field}`: {message}")]
-pub struct ArffError {
-    /// 1-based line.
-    pub line: usize,
-    /// 1-based column.
-    pub column: usize,
-    /// The attribute (or header keyword) concerned.
-    pub field: String,
-    /// What is wrong.
-    pub message: String,
-}
+/// A file that cannot be read: line, column (1-based; 0 when unknown), field (the
+/// attribute or header keyword concerned), what.
+pub type ArffError = recording::TextError;
 
 /// Something accepted that the header did not declare.
 #[derive(Debug, Clone, PartialEq, Eq)]

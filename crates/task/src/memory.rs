@@ -1,6 +1,8 @@
-//! Memory accounting for `--overall-memory-limit`: a global allocator that counts the
-//! bytes in use, so the search can stop itself (exit 22) before an allocation fails or
-//! the kernel kills the process.
+//! Memory accounting for the memory limits ([`crate::Limits::memory_usage`]): an
+//! allocator that counts the bytes in use and their peak, so a run can stop itself
+//! before an allocation fails or the kernel kills the process. A library cannot install
+//! a global allocator: the program does (`#[global_allocator]`, the command line crate
+//! for the binary and the Python extension); until it does, every reading is 0.
 
 // The only unsafe code of the project: a GlobalAlloc implementation has to be `unsafe`.
 // It forwards every call to the system allocator unchanged and only counts sizes.
@@ -82,20 +84,10 @@ pub fn peak_heap() -> u64 {
     PEAK.load(Ordering::Relaxed)
 }
 
-/// Starts a new peak heap at what is in use now (each run of `reproduce` and `study`
-/// reports its own peak).
+/// Starts a new peak heap at what is in use now (each run of an experiment reports its
+/// own peak).
 pub fn reset_peak() {
     PEAK.store(heap_in_use(), Ordering::Relaxed);
-}
-
-/// The probe that lets `solve` and the experiment limit each run's heap and measure
-/// its peak.
-pub fn probe() -> slim::MemoryProbe {
-    slim::MemoryProbe {
-        in_use: heap_in_use,
-        reset: reset_peak,
-        peak: peak_heap,
-    }
 }
 
 /// Bytes currently allocated on the heap.

@@ -40,6 +40,7 @@ mod output;
 mod ratio;
 mod record;
 mod reproduce;
+pub mod slurm;
 mod study;
 
 use std::path::PathBuf;

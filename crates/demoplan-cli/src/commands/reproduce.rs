@@ -18,6 +18,8 @@ pub fn experiment_failure(e: experiment::ExperimentError) -> Failure {
     let code = match &e {
         E::Options(_) | E::FastDownwardMissing | E::Params { .. } => ExitCode::USAGE,
         E::Condition(_) | E::Results { .. } => ExitCode::INPUT_ERROR,
+        // Some cells of the grid have no result: running it again computes them.
+        E::Incomplete { .. } => ExitCode::CHECK_FAILED,
         E::Io { .. } => ExitCode::CRITICAL_ERROR,
     };
     Failure::plain(code, e.to_string())
@@ -92,6 +94,8 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         memory: Some(crate::memory::probe()),
         memory_limit,
         children: cell_command(args.jobs as usize, memory_limit)?,
+        force: false,
+        collect_only: false,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::reproduce_cell(&options, id));
@@ -109,11 +113,20 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         started.elapsed().as_secs_f64(),
         done.report.display()
     );
+    if done.crashed > 0 {
+        eprintln!(
+            "error: {} cell(s) crashed (their records in results.jsonl say why; run again \
+             to compute them)",
+            done.crashed
+        );
+    }
     if done.failed_executions > 0 {
         eprintln!(
             "error: {} plan(s) failed the execution check (see tables.md)",
             done.failed_executions
         );
+    }
+    if done.crashed > 0 || done.failed_executions > 0 {
         return Ok(ExitCode::CHECK_FAILED);
     }
     Ok(ExitCode::SUCCESS)

@@ -57,6 +57,8 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         memory: Some(crate::memory::probe()),
         memory_limit,
         children: None,
+        force: false,
+        collect_only: false,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::study_cell(&options, id));
@@ -80,7 +82,14 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         options.out.display(),
         done.report.display()
     );
-    if done.failed_executions > 0 {
+    if done.crashed > 0 {
+        eprintln!(
+            "error: {} cell(s) crashed (their records in results.jsonl say why; run again \
+             to compute them)",
+            done.crashed
+        );
+    }
+    if done.failed_executions > 0 || done.crashed > 0 {
         return Ok(ExitCode::CHECK_FAILED);
     }
     Ok(ExitCode::SUCCESS)

@@ -13,7 +13,6 @@
 
 mod children;
 pub mod properties;
-pub mod slurm;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;

@@ -1,1 +1,0 @@
-//! Slurm: a grid written as an array job, a collect job and `submit.sh` (see `slurm`).

@@ -50,6 +50,16 @@ pub use value::{Message as MessageValue, Value};
 /// record claiming more than this is taken for corrupt rather than allocated.
 pub const MAX_RECORD: u64 = 256 << 20;
 
+/// Decompresses into `out`, refusing more than `size` bytes (one more is read, so that a
+/// chunk longer than its header says shows in `out`'s length).
+fn read_bounded(decoder: impl std::io::Read, size: u64, out: &mut Vec<u8>) -> std::io::Result<()> {
+    use std::io::Read;
+    // `size` is at most `MAX_RECORD` (checked by the callers): a hint that fits usize.
+    out.reserve(usize::try_from(size).unwrap_or(0));
+    decoder.take(size.saturating_add(1)).read_to_end(out)?;
+    Ok(())
+}
+
 /// Largest message decoded, in bytes of its serialization: 16 MiB. The topics an import
 /// reads (`/tf`, poses, object lists) carry a few kilobytes per message, and a decoded
 /// [`Value`] tree takes several times its bytes, so a larger message of a wanted topic is

@@ -1,8 +1,16 @@
-//! MCAP files (through the `mcap` crate's streaming `LinearReader`, which decompresses zstd
-//! and lz4 chunks itself) and ROS 2 bag folders, whose `metadata.yaml` lists the files.
+//! MCAP files (through the `mcap` crate's streaming `LinearReader`) and ROS 2 bag folders,
+//! whose `metadata.yaml` lists the files.
+//!
+//! The reader hands us chunks whole (`emit_chunks`) and we open them here: `mcap` 0.26's
+//! own descent into an uncompressed chunk subtracts each inner record's length from the
+//! chunk's remaining size unchecked, which overflows (a panic with overflow checks, wrapped
+//! garbage without) when a record claims more bytes than its chunk holds; the fuzzer found
+//! it (`fuzz/regressions/bag_import/`). Opening the chunk ourselves bounds every inner
+//! record by the chunk and reuses the decompressors we already have.
 
 use std::collections::HashMap;
 use std::io::{BufReader, Read};
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -14,6 +22,9 @@ use crate::{BagError, Connection, RawMessage, Topic};
 
 pub const MAGIC: &[u8] = b"\x89MCAP0\r\n";
 
+/// A record's opcode (1 byte) and length (8 bytes, little-endian) before its body.
+const RECORD_PREFIX: usize = 9;
+
 pub struct McapReader {
     path: PathBuf,
     file: BufReader<Box<dyn crate::Input>>,
@@ -22,6 +33,11 @@ pub struct McapReader {
     consumed: u64,
     schemas: HashMap<u16, (String, String, String)>,
     channels: HashMap<u16, Arc<Connection>>,
+    /// The records of the chunk being read, decompressed, and where the next one starts.
+    chunk: Vec<u8>,
+    chunk_next: usize,
+    /// Where in the file the chunk being read ends (for errors inside it).
+    chunk_offset: u64,
 }
 
 impl McapReader {
@@ -35,18 +51,21 @@ impl McapReader {
             path: path.to_path_buf(),
             file: BufReader::with_capacity(1 << 16, file),
             // A chunk or record larger than this is taken for corrupt rather than
-            // allocated (the reader would otherwise reserve a chunk's stated size), and chunk
-            // CRCs are checked so that a damaged uncompressed chunk is an error.
+            // allocated (the reader would otherwise reserve a chunk's stated size). Chunks
+            // come whole; `open_chunk` decompresses them and checks their CRCs.
             reader: LinearReader::new_with_options(
                 LinearReaderOptions::default()
                     .with_record_length_limit(
                         usize::try_from(crate::MAX_RECORD).unwrap_or(usize::MAX),
                     )
-                    .with_validate_chunk_crcs(true),
+                    .with_emit_chunks(true),
             ),
             consumed: 0,
             schemas: HashMap::new(),
             channels: HashMap::new(),
+            chunk: Vec::new(),
+            chunk_next: 0,
+            chunk_offset: 0,
         }
     }
 
@@ -74,6 +93,16 @@ impl McapReader {
     /// The next message in file order, or `None` at the end of the file.
     pub fn next_message(&mut self) -> Result<Option<RawMessage>, BagError> {
         loop {
+            if let Some((opcode, range)) = self.next_chunk_record()? {
+                let record = match mcap::parse_record(opcode, &self.chunk[range]) {
+                    Ok(record) => Owned::from(record),
+                    Err(error) => return Err(self.chunk_error(error.to_string())),
+                };
+                match self.take(record)? {
+                    Some(message) => return Ok(Some(message)),
+                    None => continue,
+                }
+            }
             let event = match self.reader.next_event() {
                 None => return Ok(None),
                 Some(event) => event,
@@ -97,11 +126,25 @@ impl McapReader {
                 }
                 Ok(LinearReadEvent::Record { opcode, data }) => {
                     match mcap::parse_record(opcode, data) {
+                        Ok(Record::Chunk { header, data }) => {
+                            let data = data.into_owned();
+                            self.open_chunk(&header, data)?;
+                            continue;
+                        }
                         Ok(record) => Owned::from(record),
                         Err(error) => return Err(self.error(error)),
                     }
                 }
             };
+            if let Some(message) = self.take(record)? {
+                return Ok(Some(message));
+            }
+        }
+    }
+
+    /// Takes a record in: schemas and channels are kept, a message is returned.
+    fn take(&mut self, record: Owned) -> Result<Option<RawMessage>, BagError> {
+        {
             match record {
                 Owned::Schema {
                     id,
@@ -143,6 +186,113 @@ impl McapReader {
                 }
                 Owned::Other => {}
             }
+        }
+        Ok(None)
+    }
+
+    /// Decompresses a chunk (checking its size and CRC) for `next_chunk_record` to walk.
+    fn open_chunk(
+        &mut self,
+        header: &mcap::records::ChunkHeader,
+        data: Vec<u8>,
+    ) -> Result<(), BagError> {
+        self.chunk_offset = self.consumed;
+        let size = header.uncompressed_size;
+        if size > crate::MAX_RECORD {
+            return Err(self.chunk_error(format!(
+                "chunk of {size} bytes uncompressed is larger than the {} accepted",
+                crate::MAX_RECORD
+            )));
+        }
+        let compression = header.compression.as_str();
+        let mut out = std::mem::take(&mut self.chunk);
+        out.clear();
+        let decoded = match compression {
+            "" => {
+                out = data;
+                Ok(())
+            }
+            "zstd" => zstd::stream::read::Decoder::new(&data[..])
+                .and_then(|decoder| crate::read_bounded(decoder, size, &mut out)),
+            "lz4" => crate::read_bounded(
+                lz4_flex::frame::FrameDecoder::new(&data[..]),
+                size,
+                &mut out,
+            ),
+            _ => {
+                return Err(BagError::UnknownCompression {
+                    path: self.path.clone(),
+                    offset: self.consumed,
+                    compression: compression.to_string(),
+                    supported: "none, zstd, lz4",
+                })
+            }
+        };
+        let shown = if compression.is_empty() {
+            "uncompressed"
+        } else {
+            compression
+        };
+        if let Err(e) = decoded {
+            return Err(self.chunk_error(format!("{shown} chunk does not decompress: {e}")));
+        }
+        if out.len() as u64 != size {
+            return Err(self.chunk_error(format!(
+                "{shown} chunk holds {} bytes, but its header says {size}",
+                out.len()
+            )));
+        }
+        // A CRC of 0 means none was written (MCAP's specification).
+        let crc = crc32fast::hash(&out);
+        if header.uncompressed_crc != 0 && crc != header.uncompressed_crc {
+            return Err(self.chunk_error(format!(
+                "chunk CRC mismatch: the header says {:08x}, the data gives {crc:08x}",
+                header.uncompressed_crc
+            )));
+        }
+        self.chunk = out;
+        self.chunk_next = 0;
+        Ok(())
+    }
+
+    /// The opcode and body of the open chunk's next record, bounded by the chunk; `None`
+    /// when the chunk is done (or none is open).
+    fn next_chunk_record(&mut self) -> Result<Option<(u8, Range<usize>)>, BagError> {
+        let rest = self.chunk.len().saturating_sub(self.chunk_next);
+        if rest == 0 {
+            return Ok(None);
+        }
+        let start = self.chunk_next;
+        let Some(prefix) = self.chunk.get(start..start.saturating_add(RECORD_PREFIX)) else {
+            return Err(self.chunk_error(format!(
+                "the chunk ends {rest} byte(s) into a record's opcode and length"
+            )));
+        };
+        let mut length = [0u8; 8];
+        length.copy_from_slice(&prefix[1..]);
+        let length = u64::from_le_bytes(length);
+        let opcode = prefix[0];
+        // `prefix` is whole, so the chunk has at least RECORD_PREFIX bytes from `start`.
+        let body = start.saturating_add(RECORD_PREFIX);
+        let room = rest.saturating_sub(RECORD_PREFIX);
+        let end = usize::try_from(length)
+            .ok()
+            .filter(|&length| length <= room)
+            .and_then(|length| body.checked_add(length));
+        let Some(end) = end else {
+            return Err(self.chunk_error(format!(
+                "a record (opcode {opcode:#04x}) of {length} bytes, but the chunk has {room} left"
+            )));
+        };
+        self.chunk_next = end;
+        Ok(Some((opcode, body..end)))
+    }
+
+    fn chunk_error(&self, what: String) -> BagError {
+        BagError::Corrupt {
+            path: self.path.clone(),
+            offset: self.chunk_offset,
+            what,
         }
     }
 

@@ -397,8 +397,8 @@ impl Ros1Reader {
                 out = data;
                 Ok(())
             }
-            "bz2" => read_bounded(bzip2::read::BzDecoder::new(&data[..]), size, &mut out),
-            "lz4" => read_bounded(
+            "bz2" => crate::read_bounded(bzip2::read::BzDecoder::new(&data[..]), size, &mut out),
+            "lz4" => crate::read_bounded(
                 lz4_flex::frame::FrameDecoder::new(&data[..]),
                 size,
                 &mut out,
@@ -517,12 +517,4 @@ fn split_record(chunk: &[u8], at: usize) -> Result<(&[u8], &[u8], usize), String
         &chunk[data_at..data_end],
         data_end,
     ))
-}
-
-/// Decompresses into `out`, refusing more than `size` bytes.
-fn read_bounded(decoder: impl Read, size: u64, out: &mut Vec<u8>) -> std::io::Result<()> {
-    // `size` is at most `MAX_CHUNK` (checked by the caller): a hint that fits usize.
-    out.reserve(usize::try_from(size).unwrap_or(0));
-    decoder.take(size.saturating_add(1)).read_to_end(out)?;
-    Ok(())
 }

@@ -408,8 +408,17 @@ fn flipped_bytes_give_errors_or_messages_never_a_panic() {
 /// An MCAP file of one `ros2msg` topic, `/big`, with messages of `sizes` bytes (a
 /// `uint8[]` in CDR), written by the `mcap` crate's writer.
 fn mcap_with_messages(sizes: &[usize]) -> Vec<u8> {
+    mcap_with_messages_compressed(sizes, Some(mcap::Compression::Zstd))
+}
+
+/// As `mcap_with_messages`, with the chunks compressed as `compression` says.
+fn mcap_with_messages_compressed(
+    sizes: &[usize],
+    compression: Option<mcap::Compression>,
+) -> Vec<u8> {
     let mut out = std::io::Cursor::new(Vec::new());
-    let mut writer = mcap::Writer::new(&mut out).unwrap();
+    let options = mcap::WriteOptions::new().compression(compression);
+    let mut writer = mcap::Writer::with_options(&mut out, options).unwrap();
     let schema = writer
         .add_schema("test_msgs/msg/Blob", "ros2msg", b"uint8[] data")
         .unwrap();
@@ -465,4 +474,99 @@ fn a_message_over_the_maximum_size_is_an_error_naming_it() {
     assert!(messages.next().is_none());
     let skipped = bag.messages(|topic| topic != "/big").unwrap();
     assert_eq!(skipped.count(), 0);
+}
+
+/// Every chunk compression MCAP writers use (none, zstd, lz4) reads to the same messages.
+#[test]
+fn every_mcap_chunk_compression_reads_the_same_messages() {
+    let sizes = [12, 300, 5_000, 70_000];
+    let read = |compression| {
+        let bytes = mcap_with_messages_compressed(&sizes, compression);
+        let bag = bags::from_bytes(Path::new("c.mcap"), bytes).unwrap();
+        let messages: Vec<(u64, i64, String)> = bag
+            .messages(|_| true)
+            .unwrap()
+            .map(|m| {
+                let m = m.unwrap();
+                (m.index, m.receive_time, format!("{:?}", m.value))
+            })
+            .collect();
+        messages
+    };
+    let plain = read(None);
+    assert_eq!(plain.len(), sizes.len());
+    assert!(
+        plain[3].2.len() > 70_000,
+        "the largest message decodes whole"
+    );
+    assert_eq!(read(Some(mcap::Compression::Zstd)), plain);
+    assert_eq!(read(Some(mcap::Compression::Lz4)), plain);
+}
+
+/// Where the first chunk of an MCAP file starts, its CRC field, and its first inner record.
+struct ChunkAt {
+    crc: usize,
+    first_record: usize,
+}
+
+fn first_chunk(bytes: &[u8]) -> ChunkAt {
+    let le = |at: usize| u64::from_le_bytes(bytes[at..at + 8].try_into().unwrap()) as usize;
+    let mut at = 8; // the magic
+    loop {
+        let (opcode, len) = (bytes[at], le(at + 1));
+        if opcode == 0x06 {
+            // start and end times, uncompressed size, then the CRC and the compression.
+            let crc = at + 9 + 24;
+            let compression_len =
+                u32::from_le_bytes(bytes[crc + 4..crc + 8].try_into().unwrap()) as usize;
+            let first_record = crc + 8 + compression_len + 8;
+            return ChunkAt { crc, first_record };
+        }
+        at += 9 + len;
+    }
+}
+
+/// The overflow the fuzzer found in `mcap`'s own chunk reader: an uncompressed chunk's
+/// record claiming more bytes than the chunk holds is an error naming the chunk.
+#[test]
+fn a_record_longer_than_its_uncompressed_chunk_is_an_error() {
+    let mut bytes = mcap_with_messages_compressed(&[100, 200], None);
+    let chunk = first_chunk(&bytes);
+    // No CRC, so that the length itself is what the reader must catch.
+    bytes[chunk.crc..chunk.crc + 4].fill(0);
+    bytes[chunk.first_record + 1..chunk.first_record + 9]
+        .copy_from_slice(&(u64::MAX - 3).to_le_bytes());
+    let bag = bags::from_bytes(Path::new("long.mcap"), bytes).unwrap();
+    let err = bag.messages(|_| true).unwrap().next().unwrap().unwrap_err();
+    assert!(matches!(err, BagError::Corrupt { .. }), "{err:?}");
+    let text = err.to_string();
+    assert!(text.starts_with("long.mcap: byte "), "{text}");
+    assert!(
+        text.contains(&format!(
+            "a record (opcode 0x03) of {} bytes, but the chunk has ",
+            u64::MAX - 3
+        )),
+        "{text}"
+    );
+}
+
+/// A byte changed inside an uncompressed chunk is caught by the chunk's CRC.
+#[test]
+fn a_damaged_uncompressed_chunk_fails_its_crc() {
+    let mut bytes = mcap_with_messages_compressed(&[100, 200], None);
+    let chunk = first_chunk(&bytes);
+    let last = bytes.len() - 200;
+    assert!(last > chunk.first_record);
+    bytes[chunk.first_record + 40] ^= 0x10;
+    let bag = bags::from_bytes(Path::new("crc.mcap"), bytes).unwrap();
+    let err = bag
+        .messages(|_| true)
+        .unwrap()
+        .find_map(Result::err)
+        .expect("an error");
+    let text = err.to_string();
+    assert!(
+        text.contains("chunk CRC mismatch: the header says "),
+        "{text}"
+    );
 }

@@ -466,8 +466,8 @@ pub struct SolveArgs {
     #[command(flatten)]
     pub limits: RunLimitArgs,
     /// Who plans: demoplan or fast-downward.
-    #[arg(long, value_name = "PLANNER", default_value = "demoplan")]
-    pub planner: String,
+    #[arg(long, value_name = "PLANNER", default_value = "demoplan", value_parser = planner_names())]
+    pub planner: slim::PlannerName,
     /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
     #[arg(long, value_name = "PATH")]
     pub fd: Option<PathBuf>,
@@ -497,6 +497,17 @@ pub struct ExecuteArgs {
     /// Write the frames of the execution as a recording (JSON Lines).
     #[arg(long, value_name = "FILE.jsonl")]
     pub frames: Option<PathBuf>,
+}
+
+/// `solve --planner`: the values are [`slim::PlannerName`]'s names, listed in the help
+/// and checked by clap. (`slim` has no clap, and the orphan rule keeps `ValueEnum` off a
+/// type of another crate, so its names are the possible values.)
+fn planner_names() -> impl clap::builder::TypedValueParser<Value = slim::PlannerName> {
+    use clap::builder::TypedValueParser as _;
+    let names = slim::PlannerName::ALL.map(slim::PlannerName::name);
+    clap::builder::PossibleValuesParser::new(names).try_map(|name| {
+        slim::PlannerName::from_name(&name).ok_or_else(|| format!("unknown planner `{name}`"))
+    })
 }
 
 /// `learn --activities`: how segments become activities ([`learn::Grouping`]).

@@ -1,12 +1,13 @@
 //! Turning library errors into what the terminal shows: file, line, column, an underline.
 
 use miette::{
-    Diagnostic, GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource, SourceSpan,
+    Diagnostic, GraphicalReportHandler, GraphicalTheme, LabeledSpan, MietteError, NamedSource,
+    SourceCode, SourceSpan, SpanContents,
 };
 use std::fmt;
 use std::path::Path;
 
-use crate::exit::ExitCode;
+use slim::ExitCode;
 
 /// A failed command: what to print on standard error, and the exit code.
 #[derive(Debug)]
@@ -44,7 +45,7 @@ impl Failure {
         };
         let diagnostic = SourceDiagnostic {
             message: error.message.clone(),
-            code,
+            code: code.to_string(),
             help: error.help.clone(),
             label: error.label.clone(),
             span: (error.span.start as usize, error.span.len()).into(),
@@ -57,28 +58,30 @@ impl Failure {
     }
 }
 
-/// A message about a span of a source text, rendered with the line and an underline.
+/// A message about a span of a source text, rendered with the line and an underline:
+/// the whole text of a file ([`NamedSource`]), or one line of a recording
+/// ([`LineSource`]).
 #[derive(Debug)]
-pub(crate) struct SourceDiagnostic {
+pub(crate) struct SourceDiagnostic<S = NamedSource<String>> {
     pub(crate) message: String,
-    pub(crate) code: &'static str,
+    pub(crate) code: String,
     pub(crate) help: Option<String>,
     pub(crate) label: String,
     pub(crate) span: SourceSpan,
-    pub(crate) source: NamedSource<String>,
+    pub(crate) source: S,
 }
 
-impl fmt::Display for SourceDiagnostic {
+impl<S> fmt::Display for SourceDiagnostic<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.message)
     }
 }
 
-impl std::error::Error for SourceDiagnostic {}
+impl<S: fmt::Debug> std::error::Error for SourceDiagnostic<S> {}
 
-impl Diagnostic for SourceDiagnostic {
+impl<S: SourceCode + fmt::Debug> Diagnostic for SourceDiagnostic<S> {
     fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        Some(Box::new(self.code))
+        Some(Box::new(&self.code))
     }
 
     fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
@@ -87,7 +90,7 @@ impl Diagnostic for SourceDiagnostic {
             .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
 
-    fn source_code(&self) -> Option<&dyn miette::SourceCode> {
+    fn source_code(&self) -> Option<&dyn SourceCode> {
         Some(&self.source)
     }
 
@@ -96,6 +99,35 @@ impl Diagnostic for SourceDiagnostic {
             Some(self.label.clone()),
             self.span,
         ))))
+    }
+}
+
+/// One line of a file, shown with its real line number: a recording's line is all
+/// of it that is kept for its error.
+#[derive(Debug)]
+pub(crate) struct LineSource {
+    pub(crate) name: String,
+    /// 0-based line number.
+    pub(crate) line: usize,
+    pub(crate) text: String,
+}
+
+impl SourceCode for LineSource {
+    fn read_span<'a>(
+        &'a self,
+        span: &SourceSpan,
+        before: usize,
+        after: usize,
+    ) -> Result<Box<dyn SpanContents<'a> + 'a>, MietteError> {
+        let inner = self.text.as_str().read_span(span, before, after)?;
+        Ok(Box::new(miette::MietteSpanContents::new_named(
+            self.name.clone(),
+            inner.data(),
+            *inner.span(),
+            inner.line() + self.line,
+            inner.column(),
+            inner.line_count(),
+        )))
     }
 }
 

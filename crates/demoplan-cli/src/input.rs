@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
+use slim::ExitCode;
 
 /// Reads a text file; a missing or unreadable file is a command line error (exit 36).
 pub fn read_text(path: &Path) -> Result<String, Failure> {
@@ -42,47 +42,27 @@ pub fn sim_params(path: Option<&Path>) -> Result<simulate::SimParams, Failure> {
     })
 }
 
-/// Finds the domain file of a problem by Fast Downward's naming rules: `domain.pddl`,
-/// `NAME-domain.pddl`, the first three characters of the problem's name followed by
-/// `-domain.pddl` (airport's `p01-domain.pddl`), `domain_NAME.pddl`, `domain-NAME.pddl`,
-/// all beside the problem.
+/// Finds the domain file of a problem by Fast Downward's naming rules
+/// ([`pddl::domain_file_candidates`]): the first candidate that is a file.
 pub fn find_domain_file(problem: &Path) -> Result<PathBuf, Failure> {
-    let dir = problem.parent().unwrap_or(Path::new(""));
-    let name = problem
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let stem = problem
-        .file_stem()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let suffix = problem
-        .extension()
-        .map(|e| format!(".{}", e.to_string_lossy()))
-        .unwrap_or_default();
-    let prefix: String = name.chars().take(3).collect();
-    let candidates = [
-        "domain.pddl".to_string(),
-        format!("{stem}-domain{suffix}"),
-        format!("{prefix}-domain.pddl"),
-        format!("domain_{name}"),
-        format!("domain-{name}"),
-    ];
-    candidates
+    let candidates = pddl::domain_file_candidates(problem);
+    if let Some(found) = candidates.iter().find(|p| p.is_file()) {
+        return Ok(found.clone());
+    }
+    let names: Vec<String> = candidates
         .iter()
-        .map(|c| dir.join(c))
-        .find(|p| p.is_file())
-        .ok_or_else(|| {
-            Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "could not find the domain file of {} using the naming rules (tried {}); \
-                     name it on the command line",
-                    problem.display(),
-                    candidates.join(", ")
-                ),
-            )
-        })
+        .filter_map(|c| c.file_name())
+        .map(|n| n.to_string_lossy().into_owned())
+        .collect();
+    Err(Failure::plain(
+        ExitCode::USAGE,
+        format!(
+            "could not find the domain file of {} using the naming rules (tried {}); name it \
+             on the command line",
+            problem.display(),
+            names.join(", ")
+        ),
+    ))
 }
 
 /// A domain and problem read, parsed and checked against each other.

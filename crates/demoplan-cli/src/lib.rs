@@ -20,14 +20,13 @@ use clap::Parser;
 mod cli;
 mod commands;
 mod diagnostic;
-mod exit;
 mod input;
 mod memory;
 mod output;
 mod progress;
 mod recording_input;
 
-pub use exit::ExitCode;
+pub use slim::ExitCode;
 // For the Python extension's in-process calls: failures rendered as the command line
 // renders them, and the counting allocator's readings (the extension's Rust heap).
 pub use diagnostic::Failure;

@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::Path;
 
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
+use slim::ExitCode;
 
 /// Writes `text` to standard output (or the writer standing for it). A reader that
 /// stopped early (`| head`) is no error: exit 141, quietly, as a shell shows for SIGPIPE

@@ -54,7 +54,7 @@ fn lower_crates_never_depend_on_higher_ones() {
         ("translate", &["pddl", "task"]),
         ("search", &["task"]),
         ("validate", &["pddl"]),
-        ("simulate", &["geometry", "recording"]),
+        ("simulate", &["atomic-write", "geometry", "recording"]),
         ("import", &["bags", "recording"]),
         ("grounding", &["recording"]),
         ("segment", &["recording", "grounding"]),
@@ -98,11 +98,13 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 }
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
-/// computing something that belongs in a library crate. The budget is 3,400 today; issue
-/// 21 aims at 2,500. What is left above that: the option declarations and their help
-/// texts (`cli.rs`), diagnostics (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`),
-/// file handling, process plumbing (`memory.rs`, `progress.rs`, the experiments' child
-/// processes), and `learn`'s two phases around the library's lock (`library.rs`).
+/// computing something that belongs in a library crate. The budget is 3,070 today; issue
+/// 21 aimed at 2,500. What is left: the option declarations and their help texts
+/// (`cli.rs`, about 650 lines), diagnostics (`diagnostic.rs`, `recording_input.rs`,
+/// `demo_input.rs`: library errors rendered with miette, which no library crate may use),
+/// file handling, process plumbing (`memory.rs`, the counting allocator the Python
+/// extension relies on; `progress.rs`, indicatif; the experiments' child processes), and
+/// each command's calls and printing.
 #[test]
 fn the_cli_stays_a_thin_shell() {
     fn lines(dir: &Path) -> usize {
@@ -121,5 +123,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 3_400, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 3_070, "crates/demoplan-cli/src has {total} lines");
 }

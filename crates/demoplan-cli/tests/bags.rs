@@ -88,20 +88,18 @@ fn write(dir: &Path, name: &str, bytes: &[u8]) -> PathBuf {
     path
 }
 
-fn find(bytes: &[u8], needle: &[u8]) -> usize {
-    bytes
-        .windows(needle.len())
-        .position(|w| w == needle)
-        .unwrap()
-}
-
 #[test]
 fn broken_bags_exit_31_naming_file_and_place_and_write_nothing() {
     let tmp = TempDir::new("broken");
     let good = std::fs::read(bag_fixtures().join("p01-d01.bz2.bag")).unwrap();
     let mcap = std::fs::read(bag_fixtures().join("p01-d01-ros2/p01-d01-ros2.mcap")).unwrap();
     let mut unknown = good.clone();
-    let at = find(&unknown, b"compression=bz2") + "compression=".len();
+    let field = b"compression=bz2";
+    let at = unknown
+        .windows(field.len())
+        .position(|w| w == field)
+        .unwrap()
+        + "compression=".len();
     unknown[at..at + 3].copy_from_slice(b"xz9");
     let mut damaged = good.clone();
     for byte in &mut damaged[4500..4600] {

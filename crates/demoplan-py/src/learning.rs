@@ -385,35 +385,8 @@ pub fn simulate_study(
             // The error names the parameter (`participants`, `per_participant`,
             // `cubes`), which the Python function's are named after.
             .map_err(|e| Failure::plain(ExitCode::USAGE, e))?;
-        std::fs::create_dir_all(&out).map_err(|e| {
-            Failure::plain(
-                ExitCode::CRITICAL_ERROR,
-                format!("cannot create {}: {e}", out.display()),
-            )
-        })?;
-        let mut written = Vec::new();
-        for demo in &study.demonstrations {
-            let path = out.join(demo.recording_name());
-            // The truth is rendered beside the frames, so it is kept until the recording
-            // is in place; it is a small part of the recording's size.
-            let mut truth = Vec::new();
-            let mut frames = None;
-            demoplan_cli::write_atomically_with(&path, |file| {
-                frames = Some(demo.write(file, &mut truth)?);
-                Ok(())
-            })?;
-            demoplan_cli::write_atomically_with(&out.join(demo.truth_name()), |file| {
-                file.write_all(&truth)
-            })?;
-            written.push(frames.ok_or_else(|| {
-                Failure::plain(
-                    ExitCode::CRITICAL_ERROR,
-                    format!("cannot write {}", path.display()),
-                )
-            })?);
-        }
-        let manifest = simulate::manifest(&study, seed, &params, &written);
-        demoplan_cli::write_atomically(&out.join(simulate::MANIFEST), &manifest)?;
+        simulate::write_study(&study, seed, &params, &out)
+            .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e))?;
         Ok(study
             .demonstrations
             .iter()

@@ -89,19 +89,8 @@ fn plan_texts(
         domain: &domain,
         problem: &problem,
     };
-    let logged =
-        slim::plan_logged(input, &config, limits, start, &mut |_| {}).map_err(|e| match e {
-            slim::RunError::Translate(e) => Failure::plain(
-                ExitCode::INPUT_ERROR,
-                format!("{}: {e}", problem_path.display()),
-            ),
-            slim::RunError::Search(e @ search::SearchError::CostTooLarge { .. }) => {
-                Failure::plain(ExitCode::UNSUPPORTED, e.to_string())
-            }
-            slim::RunError::Search(e) => {
-                Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string())
-            }
-        })?;
+    let logged = slim::plan_logged(input, &config, limits, start, &mut |_| {})
+        .map_err(|e| Failure::plain(e.exit_code(), e.message(problem_path)))?;
     let record = logged.statistics_record(None);
     let statistics = serde_json::to_string(&record)
         .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e.to_string()))?;

@@ -20,8 +20,9 @@ pub fn search_string(planner: Planner, time_limit: Duration) -> String {
     }
 }
 
-/// Which domain a cell plans on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+/// Which domain a cell plans on. Written in results as its [`name`](LevelChoice::name).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(try_from = "String", into = "String")]
 pub enum LevelChoice {
     /// The domain of this priority level (`learn::levels`).
     Prio(usize),
@@ -54,6 +55,29 @@ impl LevelChoice {
                 .filter(|n| *n > 0)
                 .map(LevelChoice::Prio),
         }
+    }
+}
+
+impl std::fmt::Display for LevelChoice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.name())
+    }
+}
+
+impl From<LevelChoice> for String {
+    fn from(level: LevelChoice) -> String {
+        level.name()
+    }
+}
+
+impl TryFrom<String> for LevelChoice {
+    type Error = String;
+
+    /// A name read back from a results file; an unknown one names the field and the
+    /// names it may be.
+    fn try_from(name: String) -> Result<LevelChoice, String> {
+        LevelChoice::from_name(&name)
+            .ok_or_else(|| format!("level `{name}` is none of prio-N (N >= 1), full, alg1"))
     }
 }
 

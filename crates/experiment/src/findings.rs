@@ -57,20 +57,16 @@ pub fn findings(records: &[RunRecord]) -> Vec<String> {
                 .collect();
             median_record(&chosen)
         };
-        let domain_levels = |r: &RunRecord| {
-            matches!(
-                r.level_choice(),
-                Some(LevelChoice::Prio(_) | LevelChoice::Full)
-            )
-        };
+        let domain_levels =
+            |r: &RunRecord| matches!(r.level, LevelChoice::Prio(_) | LevelChoice::Full);
         let largest = records
             .iter()
             .filter(|r| r.planner == planner && r.conditions.height == height && domain_levels(r))
             .map(|r| r.prio)
             .max();
         let full = largest.and_then(|p| of(&|r| domain_levels(r) && r.prio == p));
-        let p1 = of(&|r| r.level_choice() == Some(LevelChoice::Prio(1)));
-        let alg1 = of(&|r| r.level_choice() == Some(LevelChoice::Algorithm1));
+        let p1 = of(&|r| r.level == LevelChoice::Prio(1));
+        let alg1 = of(&|r| r.level == LevelChoice::Algorithm1);
         let label = planner.label();
         let paper_ratio = planner.paper_ratio();
         let Some(full) = full else { continue };

@@ -30,6 +30,7 @@
 //! ```
 
 mod cell;
+mod closing;
 mod findings;
 pub mod grid;
 mod lab;

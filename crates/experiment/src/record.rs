@@ -81,8 +81,8 @@ pub struct RunRecord {
     /// [`Cell::id`].
     pub id: String,
     pub conditions: Conditions,
-    /// [`LevelChoice::name`]: `prio-N`, `full`, `alg1`.
-    pub level: String,
+    /// Written as [`LevelChoice::name`]: `prio-N`, `full`, `alg1`.
+    pub level: LevelChoice,
     pub planner: Planner,
     pub time_limit_s: f64,
     pub repeat: u32,
@@ -130,7 +130,7 @@ impl RunRecord {
         RunRecord {
             id: cell.id(),
             conditions: cell.conditions.clone(),
-            level: cell.level.name(),
+            level: cell.level,
             planner: cell.planner,
             time_limit_s: cell.time_limit.as_secs_f64(),
             repeat: cell.repeat,
@@ -194,11 +194,6 @@ impl RunRecord {
         } else {
             None
         }
-    }
-
-    /// The level, parsed.
-    pub fn level_choice(&self) -> Option<LevelChoice> {
-        LevelChoice::from_name(&self.level)
     }
 
     /// Whether this record is `cell`'s.
@@ -299,7 +294,7 @@ mod tests {
         RunRecord {
             id: id.to_string(),
             conditions: Conditions::paper_goal(7, 1, 1),
-            level: "prio-1".into(),
+            level: LevelChoice::Prio(1),
             planner: Planner::Lmcut,
             time_limit_s: 20.0,
             repeat: 0,
@@ -352,11 +347,13 @@ mod tests {
     }
 
     #[test]
-    fn outcomes_and_planners_are_written_as_their_words() {
+    fn outcomes_planners_and_levels_are_written_as_their_words() {
         let mut r = record("a");
         r.outcome = Outcome::MemoryLimit;
         r.planner = Planner::FdIpdb;
+        r.level = LevelChoice::Prio(12);
         let line = r.to_json_line();
+        assert!(line.contains(r#""level":"prio-12""#), "{line}");
         assert!(line.contains(r#""planner":"fd-ipdb""#), "{line}");
         assert!(line.contains(r#""outcome":"memory""#), "{line}");
         assert_eq!(
@@ -366,7 +363,7 @@ mod tests {
     }
 
     #[test]
-    fn an_unknown_outcome_or_planner_is_an_error_naming_the_file_line_and_field() {
+    fn an_unknown_outcome_planner_or_level_is_an_error_naming_the_file_line_and_field() {
         let good = record("a").to_json_line();
         for (from, to, says) in [
             (
@@ -379,6 +376,11 @@ mod tests {
                 r#""planner":"lmcut""#,
                 r#""planner":"lm-cut""#,
                 "planner `lm-cut` is none of ipdb, lmcut, fd-ipdb, fd-lmcut",
+            ),
+            (
+                r#""level":"prio-1""#,
+                r#""level":"prio-0""#,
+                "level `prio-0` is none of prio-N (N >= 1), full, alg1",
             ),
         ] {
             assert!(good.contains(from), "{good}");

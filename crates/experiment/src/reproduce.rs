@@ -256,7 +256,7 @@ pub fn reproduce(
 
     // Results.
     for r in records.iter().filter(|r| r.solved() && r.repeat == 0) {
-        if r.level_choice() == Some(LevelChoice::Algorithm1) {
+        if r.level == LevelChoice::Algorithm1 {
             continue;
         }
         let Some(cost) = r.cost else { continue };
@@ -413,7 +413,7 @@ fn experiment(
 ) -> report::Experiment {
     let mut keys: Vec<(Planner, usize, usize)> = records
         .iter()
-        .filter(|r| matches!(r.level_choice(), Some(LevelChoice::Prio(_))))
+        .filter(|r| matches!(r.level, LevelChoice::Prio(_)))
         .map(|r| (r.planner, r.prio, goal(r)))
         .collect();
     keys.dedup();
@@ -426,7 +426,7 @@ fn experiment(
                     r.planner == *planner
                         && r.prio == *prio
                         && goal(r) == *g
-                        && matches!(r.level_choice(), Some(LevelChoice::Prio(_)))
+                        && matches!(r.level, LevelChoice::Prio(_))
                 })
                 .collect();
             let m = median_record(&group)?;
@@ -545,8 +545,8 @@ fn tables_markdown(
         .iter()
         .filter(|r| goal(r) == tallest && r.repeat == 0)
     {
-        let level = match r.level_choice() {
-            Some(LevelChoice::Algorithm1) => format!("Algorithm 1 (planned at {})", r.prio),
+        let level = match r.level {
+            LevelChoice::Algorithm1 => format!("Algorithm 1 (planned at {})", r.prio),
             _ => format!("priority {}", r.prio),
         };
         let _ = writeln!(
@@ -585,17 +585,15 @@ fn tables_markdown(
             };
             let largest = records
                 .iter()
-                .filter(|r| matches!(r.level_choice(), Some(LevelChoice::Prio(_))))
+                .filter(|r| matches!(r.level, LevelChoice::Prio(_)))
                 .map(|r| r.prio)
                 .max()
                 .unwrap_or(0);
-            let full = pick(&|r| {
-                matches!(r.level_choice(), Some(LevelChoice::Prio(_))) && r.prio == largest
-            });
-            let p1 = pick(&|r| r.level_choice() == Some(LevelChoice::Prio(1)));
-            let alg1 = pick(&|r| r.level_choice() == Some(LevelChoice::Algorithm1));
+            let full = pick(&|r| matches!(r.level, LevelChoice::Prio(_)) && r.prio == largest);
+            let p1 = pick(&|r| r.level == LevelChoice::Prio(1));
+            let alg1 = pick(&|r| r.level == LevelChoice::Algorithm1);
             let cell = |den: Option<&RunRecord>, m: Measure| match (full, den) {
-                (Some(f), Some(d)) if f.prio != d.prio || d.level == "alg1" => {
+                (Some(f), Some(d)) if f.prio != d.prio || d.level == LevelChoice::Algorithm1 => {
                     ratio(f, d, m).map_or("-".to_string(), |r| r.to_string())
                 }
                 _ => "-".to_string(),

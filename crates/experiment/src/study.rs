@@ -341,7 +341,7 @@ struct RatioRow {
 fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
     // (conditions without seed, planner's name, planner) -> seed -> level -> record; by
     // the planner's name, the order ratios.csv has always had.
-    type Levels<'a> = BTreeMap<String, &'a RunRecord>;
+    type Levels<'a> = BTreeMap<LevelChoice, &'a RunRecord>;
     type Key = (Conditions, &'static str, Planner);
     let mut groups: BTreeMap<Key, BTreeMap<u64, Levels<'_>>> = BTreeMap::new();
     for r in records {
@@ -350,7 +350,7 @@ fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
             .or_default()
             .entry(r.conditions.seed)
             .or_default()
-            .insert(r.level.clone(), r);
+            .insert(r.level, r);
     }
     let mut rows = Vec::new();
     for ((conditions, _, planner), seeds) in &groups {
@@ -360,10 +360,10 @@ fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
                 let mut missing = 0;
                 for levels in seeds.values() {
                     let den = match which {
-                        Which::P1 => levels.get("prio-1"),
-                        Which::Alg1 => levels.get("alg1"),
+                        Which::P1 => levels.get(&LevelChoice::Prio(1)),
+                        Which::Alg1 => levels.get(&LevelChoice::Algorithm1),
                     };
-                    match (levels.get("full"), den) {
+                    match (levels.get(&LevelChoice::Full), den) {
                         (Some(f), Some(d)) => match ratio(f, d, measure) {
                             Some(r) => values.push(r),
                             None => missing += 1,
@@ -424,9 +424,9 @@ fn scaling_panels(records: &[RunRecord], measure: Measure) -> Vec<report::Scalin
         .iter()
         .map(|planner| {
             let series = [
-                ("prio-1", "priority 1"),
-                ("full", "full"),
-                ("alg1", "Algorithm 1"),
+                (LevelChoice::Prio(1), "priority 1"),
+                (LevelChoice::Full, "full"),
+                (LevelChoice::Algorithm1, "Algorithm 1"),
             ]
             .iter()
             .map(|(level, label)| report::ScalingSeries {
@@ -567,7 +567,7 @@ fn report_page(
     // Where priority 1 cannot plan: Algorithm 1's widening.
     let widened: Vec<&RunRecord> = records
         .iter()
-        .filter(|r| r.level == "alg1" && r.widening.len() > 1)
+        .filter(|r| r.level == LevelChoice::Algorithm1 && r.widening.len() > 1)
         .collect();
     s.push_str("<h2>Where priority 1 cannot plan: Algorithm 1 widens</h2>\n");
     if widened.is_empty() {

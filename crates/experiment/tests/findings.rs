@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use experiment::{findings, parse_records, ratio, Planner, RunRecord};
+use experiment::{findings, parse_records, ratio, LevelChoice, Planner, RunRecord};
 use report::Measure;
 
 fn fixture() -> Vec<RunRecord> {
@@ -25,17 +25,17 @@ fn findings_of_a_fixed_results_file() {
 fn findings_state_the_ratios_the_records_give() {
     let records = fixture();
     let notes = findings(&records).join("\n");
-    let pick = |planner: Planner, level: &str| {
+    let pick = |planner: Planner, level: LevelChoice| {
         records
             .iter()
             .find(|r| r.planner == planner && r.level == level && r.conditions.height == 4)
             .unwrap()
     };
     for planner in Planner::DEMOPLAN {
-        let full = pick(planner, "prio-3");
+        let full = pick(planner, LevelChoice::Prio(3));
         for (den, name) in [
-            (pick(planner, "prio-1"), "ratio_p1"),
-            (pick(planner, "alg1"), "ratio_alg1"),
+            (pick(planner, LevelChoice::Prio(1)), "ratio_p1"),
+            (pick(planner, LevelChoice::Algorithm1), "ratio_alg1"),
         ] {
             for (measure, words) in [
                 (Measure::Search, "search time"),
@@ -53,7 +53,7 @@ fn findings_state_the_ratios_the_records_give() {
     // The iPDB run of the largest domain hit the limit in its hill climbing: by total
     // time its ratios are lower bounds, by search time there is none (the search never
     // began).
-    assert!(pick(Planner::Ipdb, "prio-3").hit_limit());
+    assert!(pick(Planner::Ipdb, LevelChoice::Prio(3)).hit_limit());
     assert!(
         notes.contains("ratio_p1 = none by search time, >= 3.42x by total time"),
         "{notes}"

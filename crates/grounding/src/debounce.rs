@@ -48,13 +48,14 @@ pub(crate) struct Debouncer {
 impl Debouncer {
     pub fn new(min: f64, words: usize, values: usize) -> Debouncer {
         let cap = 64;
+        let no_facts = vec![0; words];
         Debouncer {
             min,
             words,
             values,
             started: false,
-            committed: vec![0; words],
-            pending: vec![0; words],
+            committed: no_facts.clone(),
+            pending: no_facts,
             start: vec![0; words * 64],
             value_committed: vec![NO_VALUE; values],
             value_pending: vec![None; values],

@@ -91,7 +91,45 @@ pub fn formats(plan: &[Planned]) -> Vec<Format> {
     formats
 }
 
+/// The closing words of `demoplan import`: each mapping used (by format name), in the
+/// mapping file's own syntax, for the user to save, edit and pass back with `--mapping`.
+pub fn mappings_used(mappings: &BTreeMap<&'static str, Mapping>) -> String {
+    let mut text = String::new();
+    for (format, mapping) in mappings {
+        let which = if mappings.len() > 1 {
+            format!(" for {format} sources")
+        } else {
+            String::new()
+        };
+        text.push_str(&format!(
+            "\nmapping used{which} (save it, edit it and pass it with --mapping):\n\n"
+        ));
+        text.push_str(&mapping.to_toml());
+    }
+    text
+}
+
 impl Planned {
+    /// The bytes one pass over the source reads: a bag folder's are its MCAP files' (the
+    /// bag knows them), a file's its own; 0 when that cannot be known.
+    pub fn size(&self) -> u64 {
+        let bag = match self.kind {
+            SourceKind::Bag(_) => crate::ros::bag_size(&self.source).ok(),
+            _ => None,
+        };
+        bag.unwrap_or_else(|| std::fs::metadata(&self.source).map_or(0, |m| m.len()))
+    }
+
+    /// What `demoplan import` says of the source once imported: `SOURCE -> OUT`, then the
+    /// import's report ([`crate::Report::render`]) indented.
+    pub fn imported(&self, header: &recording::Header, report: &crate::Report) -> String {
+        let mut text = format!("{} -> {}\n", self.source.display(), self.out.display());
+        for line in report.render(header).lines() {
+            text.push_str(&format!("  {line}\n"));
+        }
+        text
+    }
+
     /// The format whose mapping the source is imported with.
     pub fn format(&self) -> Format {
         self.kind.format().unwrap_or(Format::Unity)
@@ -134,6 +172,18 @@ mod tests {
     }
 
     const UNITY: &str = r#"{"playbackTimestepMilliseconds": 10, "log": []}"#;
+
+    #[test]
+    fn the_mappings_used_are_named_by_format_only_when_there_are_several() {
+        let unity = Mapping::default_for(Format::Unity);
+        let one = mappings_used(&BTreeMap::from([("unity", unity.clone())]));
+        assert!(one.starts_with("\nmapping used (save it"), "{one}");
+        assert!(one.ends_with(&unity.to_toml()), "{one}");
+        let bag = Mapping::default_for(Format::Ros1);
+        let two = mappings_used(&BTreeMap::from([("ros1", bag), ("unity", unity)]));
+        assert!(two.contains("mapping used for ros1 sources"), "{two}");
+        assert!(two.contains("mapping used for unity sources"), "{two}");
+    }
 
     #[test]
     fn sources_are_planned_to_their_stems_and_a_clash_is_refused() {

@@ -308,27 +308,32 @@ pub const CUBE_SIZE: [f64; 3] = [0.05, 0.05, 0.05];
 /// Default size of an `other` entity.
 pub const OTHER_SIZE: [f64; 3] = [0.1, 0.1, 0.1];
 
+/// The default globs by role, in the order they are tried (the first that matches wins).
+const DEFAULT_GLOBS: [(Role, &[&str]); 5] = [
+    (
+        Role::LeftHand,
+        &["*controller_l*", "*lefthand*", "*hand_l*", "*left_hand*"],
+    ),
+    (
+        Role::RightHand,
+        &["*controller_r*", "*righthand*", "*hand_r*", "*right_hand*"],
+    ),
+    (Role::Cube, &["*cube*"]),
+    (Role::Table, &["*table*"]),
+    (Role::Ignore, &["*camera*", "*origin*", "*marker*"]),
+];
+
 fn default_rules() -> Vec<EntityRule> {
-    let glob = |pattern: &str, role: Role| EntityRule {
-        glob: Some(pattern.to_string()),
-        role: Some(role),
-        ..EntityRule::default()
-    };
-    vec![
-        glob("*controller_l*", Role::LeftHand),
-        glob("*lefthand*", Role::LeftHand),
-        glob("*hand_l*", Role::LeftHand),
-        glob("*left_hand*", Role::LeftHand),
-        glob("*controller_r*", Role::RightHand),
-        glob("*righthand*", Role::RightHand),
-        glob("*hand_r*", Role::RightHand),
-        glob("*right_hand*", Role::RightHand),
-        glob("*cube*", Role::Cube),
-        glob("*table*", Role::Table),
-        glob("*camera*", Role::Ignore),
-        glob("*origin*", Role::Ignore),
-        glob("*marker*", Role::Ignore),
-    ]
+    DEFAULT_GLOBS
+        .iter()
+        .flat_map(|&(role, globs)| {
+            globs.iter().map(move |pattern| EntityRule {
+                glob: Some(pattern.to_string()),
+                role: Some(role),
+                ..EntityRule::default()
+            })
+        })
+        .collect()
 }
 
 fn default_labels() -> BTreeMap<String, String> {

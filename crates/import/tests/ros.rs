@@ -37,6 +37,8 @@ fn import_bag(path: &Path, mapping: &Mapping) -> Recording {
 /// The mapping of the fixtures' object list: every field it has. Grasps and contacts
 /// then come from its fields (`held`, `grabbed_by`, `contacts`) without saying so.
 const OBJECTS_MAPPING: &str = r#"
+entity = [{ name = "table", role = "table", size = [0.8, 1.2, 0.75] }]
+
 [bag]
 clock_topic = "/demoplan/objects"
 
@@ -50,11 +52,6 @@ grip = "grip[]"
 held = "held"
 grabbed_by = "grabbed_by"
 contacts = "contacts"
-
-[[entity]]
-name = "table"
-role = "table"
-size = [0.8, 1.2, 0.75]
 "#;
 
 /// Whether two orientations are the same rotation: equal up to sign within 1e-6 once

@@ -37,16 +37,11 @@ pub fn activity_color(a: Activity) -> Color {
     }
 }
 
-const OBJECT_COLORS: [Color; 8] = [
-    Color(31, 119, 180),
-    Color(255, 127, 14),
-    Color(44, 160, 44),
-    Color(214, 39, 40),
-    Color(148, 103, 189),
-    Color(140, 86, 75),
-    Color(227, 119, 194),
-    Color(23, 190, 207),
-];
+/// Distance lines, by object: Tableau's colours without grey and olive.
+const OBJECT_COLORS: [Color; 8] = {
+    let t = report::palette::TABLEAU10;
+    [t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[9]]
+};
 const INK: Color = Color(34, 34, 34);
 /// The speed panel's top is the fastest frame's speed, within these bounds (m/s).
 const SPEED_SCALE: (f32, f32) = (0.3, 3.0);
@@ -90,15 +85,14 @@ pub fn timeline(
         value,
         name: name.to_string(),
     };
+    let objects = s.space.objects();
     let tracks = s
         .space
         .hands()
         .iter()
         .enumerate()
         .map(|(hi, &hand)| {
-            let distances = s
-                .space
-                .objects()
+            let distances = objects
                 .iter()
                 .enumerate()
                 .map(|(k, &obj)| {
@@ -108,31 +102,36 @@ pub fn timeline(
                     })
                 })
                 .collect();
+            let panel = |label: &str, max: f64, thresholds: &[(f64, &str)], series| Panel {
+                label: label.to_string(),
+                max,
+                thresholds: thresholds
+                    .iter()
+                    .map(|&(v, name)| threshold(v, name))
+                    .collect(),
+                series,
+            };
+            let (acted_on, graspable) = (config.acted_on.distance, config.graspable.distance);
+            let (closed, open) = (config.hand_open.close_above, config.hand_open.open_below);
             let panels = vec![
-                Panel {
-                    label: "speed (m/s)".into(),
-                    max: f64::from(max_speed),
-                    thresholds: vec![threshold(config.hand_move.speed, "handMove")],
-                    series: vec![series(hi, "speed", INK, &|h| Some(h.speed))],
-                },
-                Panel {
-                    label: "distance (m)".into(),
-                    max: 0.4,
-                    thresholds: vec![
-                        threshold(config.acted_on.distance, "actedOn"),
-                        threshold(config.graspable.distance, "graspable"),
-                    ],
-                    series: distances,
-                },
-                Panel {
-                    label: "grip".into(),
-                    max: 1.0,
-                    thresholds: vec![
-                        threshold(config.hand_open.close_above, "closed"),
-                        threshold(config.hand_open.open_below, "open"),
-                    ],
-                    series: vec![series(hi, "grip", INK, &|h| h.grip)],
-                },
+                panel(
+                    "speed (m/s)",
+                    f64::from(max_speed),
+                    &[(config.hand_move.speed, "handMove")],
+                    vec![series(hi, "speed", INK, &|h| Some(h.speed))],
+                ),
+                panel(
+                    "distance (m)",
+                    0.4,
+                    &[(acted_on, "actedOn"), (graspable, "graspable")],
+                    distances,
+                ),
+                panel(
+                    "grip",
+                    1.0,
+                    &[(closed, "closed"), (open, "open")],
+                    vec![series(hi, "grip", INK, &|h| h.grip)],
+                ),
             ];
             let mut bands = vec![BandRow {
                 label: "segments".into(),

@@ -86,17 +86,23 @@ pub enum UpdateError {
         path: PathBuf,
         source: std::io::Error,
     },
-    /// The library's lambda is not the one asked for: costs of one library use one.
-    #[error("lambda {asked} differs from the library's lambda {library} ({})", path.display())]
+    /// The library's lambda is not the one asked for (`--lambda`): costs of one library
+    /// use one.
+    #[error(
+        "--lambda {asked} differs from the library's lambda {library} ({}); costs of one \
+         library use one lambda",
+        path.display()
+    )]
     Lambda {
         path: PathBuf,
         asked: u32,
         library: u32,
     },
-    /// The library groups segments otherwise than asked: one library counts activities
-    /// of one kind.
+    /// The library groups segments otherwise than asked (`--activities`): one library
+    /// counts activities of one kind.
     #[error(
-        "`{}` activities differ from the library's `{}` activities ({})",
+        "--activities {} differs from the library's `{}` activities ({}); one library \
+         counts activities of one kind",
         asked.name(), library.name(), path.display()
     )]
     Grouping {
@@ -229,6 +235,24 @@ mod tests {
                 })
             ),
             "{grouping:?}"
+        );
+        // Each says what was asked, the library's setting, the file and why.
+        let said = |e: Result<Option<Library>, UpdateError>| e.err().map(|e| e.to_string());
+        assert_eq!(
+            said(update(Some(50), None).read()),
+            Some(format!(
+                "--lambda 50 differs from the library's lambda 100 ({}); costs of one library \
+                 use one lambda",
+                path.display()
+            ))
+        );
+        assert_eq!(
+            said(grouping),
+            Some(format!(
+                "--activities settled differs from the library's `runs` activities ({}); one \
+                 library counts activities of one kind",
+                path.display()
+            ))
         );
         std::fs::write(&path, b"{\"format\": \xff}").unwrap();
         assert!(matches!(

@@ -55,6 +55,7 @@
 mod activity;
 mod check;
 mod error;
+mod excerpt;
 mod model;
 mod parser;
 mod reader;
@@ -64,6 +65,7 @@ mod writer;
 pub use activity::Activity;
 pub use check::{check_frame, check_header, is_valid_name, Problem, MAX_ENTITIES, MAX_NAME_LEN};
 pub use error::{ErrorKind, ReadError, WriteError};
+pub use excerpt::{offending_line, Excerpt};
 pub use model::{
     Contact, Entity, EntityId, EntityKind, EntityState, Frame, Header, Pose, Quaternion, Recording,
     Vec3,

@@ -76,11 +76,8 @@ pub struct Vec3 {
 impl Vec3 {
     /// The `f64` vector rounded to the storage type (the nearest `f32` per component).
     pub fn from_f64(v: geometry::V3) -> Vec3 {
-        Vec3 {
-            x: v.x as f32,
-            y: v.y as f32,
-            z: v.z as f32,
-        }
+        let [x, y, z] = v.to_array().map(|c| c as f32);
+        Vec3 { x, y, z }
     }
 
     /// As the `f64` vector computations use (exact).

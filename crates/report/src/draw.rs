@@ -98,11 +98,10 @@ pub enum Shape {
         points: Vec<Point>,
         stroke: Stroke,
     },
+    /// `at` is the top left corner; `size` the width and height.
     Rect {
-        x: f64,
-        y: f64,
-        w: f64,
-        h: f64,
+        at: Point,
+        size: (f64, f64),
         fill: Option<Color>,
         stroke: Option<Stroke>,
     },
@@ -180,11 +179,10 @@ impl Figure {
         fill: Option<Color>,
         stroke: Option<Stroke>,
     ) {
+        let (at, size) = (pt(x, y), (w, h));
         self.push(Shape::Rect {
-            x,
-            y,
-            w,
-            h,
+            at,
+            size,
             fill,
             stroke,
         });
@@ -353,18 +351,16 @@ fn svg_shape(s: &mut String, shape: &Shape) {
             );
         }
         Shape::Rect {
-            x,
-            y,
-            w,
-            h,
+            at,
+            size: (w, h),
             fill,
             stroke,
         } => {
             let _ = writeln!(
                 s,
                 r#"<rect x="{}" y="{}" width="{}" height="{}"{}{}/>"#,
-                num(*x),
-                num(*y),
+                num(at.x),
+                num(at.y),
                 num(*w),
                 num(*h),
                 fill_attr(*fill),

@@ -39,6 +39,7 @@ mod test_common;
 mod draw;
 mod html;
 mod model;
+pub mod palette;
 pub mod paper;
 mod planner;
 mod plots;

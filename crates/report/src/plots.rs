@@ -4,47 +4,31 @@
 
 use crate::draw::{pt, text_width, Anchor, Color, Figure, Point, Stroke, Text};
 use crate::model::{domain_label, format_limit, Experiment, Goal, Level, Measure, Outcome, Run};
+use crate::palette::{OKABE_ITO as O, TABLEAU10 as T};
 use crate::Planner;
 
 /// Line colours for domains, by priority order (Okabe-Ito, readable when printed grey).
-const DOMAIN_COLORS: [Color; 8] = [
-    Color(0, 114, 178),
-    Color(230, 159, 0),
-    Color(0, 158, 115),
-    Color(213, 94, 0),
-    Color(204, 121, 167),
-    Color(86, 180, 233),
-    Color(0, 0, 0),
-    Color(140, 140, 140),
-];
+const DOMAIN_COLORS: [Color; 8] = [O[5], O[1], O[3], O[6], O[7], O[2], O[0], MID_GREY];
+const MID_GREY: Color = Color(140, 140, 140);
 
 /// Bar colours for the operator types reach, take, put, stack, idle.
-const TYPE_COLORS: [Color; 5] = [
-    Color(86, 180, 233),
-    Color(230, 159, 0),
-    Color(0, 158, 115),
-    Color(0, 114, 178),
-    Color(170, 170, 170),
-];
+const TYPE_COLORS: [Color; 5] = [O[2], O[1], O[3], O[5], LIGHT_GREY];
+const LIGHT_GREY: Color = Color(170, 170, 170);
 
-/// Cube colours, by cube number (`cube_1` is the first).
-const CUBE_COLORS: [Color; 10] = [
-    Color(214, 39, 40),
-    Color(31, 119, 180),
-    Color(44, 160, 44),
-    Color(232, 195, 27),
-    Color(148, 103, 189),
-    Color(255, 127, 14),
-    Color(23, 190, 207),
-    Color(140, 86, 75),
-    Color(227, 119, 194),
-    Color(127, 127, 127),
-];
+/// Cube colours, by cube number (`cube_1` is the first): Tableau's, with a yellow of
+/// their own for the fourth.
+const CUBE_COLORS: [Color; 10] = [T[3], T[0], T[2], YELLOW, T[4], T[1], T[9], T[5], T[6], T[7]];
+const YELLOW: Color = Color(232, 195, 27);
 
 const INK: Color = Color(30, 30, 30);
 const GRID: Color = Color(228, 228, 228);
 const LIMIT: Color = Color(180, 30, 30);
 const TABLE: Color = Color(140, 109, 70);
+
+/// A legend entry's label, right of its key (drawn at `lx` on the row at `row`).
+fn legend_label(fig: &mut Figure, lx: f64, row: f64, label: &str) {
+    text(fig, pt(lx + 40.0, row + 2.0), label, 2, Anchor::Start, INK);
+}
 
 /// A logarithmic axis over whole decades: `10^lo` maps to pixel `from`, `10^hi` to
 /// pixel `to` (for a y axis, `from` is the bottom). Values outside are clamped.
@@ -404,14 +388,7 @@ pub fn time_figure(exp: &Experiment, planner: Planner, measure: Measure) -> Figu
         let cy = ly_row - 5.0;
         fig.line(pt(lx, cy), pt(lx + 30.0, cy), Stroke::solid(color, 2.5));
         dot_marker(&mut fig, pt(lx + 15.0, cy), color);
-        text(
-            &mut fig,
-            pt(lx + 40.0, ly_row + 2.0),
-            &domain_label(prio, ops),
-            2,
-            Anchor::Start,
-            INK,
-        );
+        legend_label(&mut fig, lx, ly_row, &domain_label(prio, ops));
         ly_row += 26.0;
     }
     ly_row += 14.0;
@@ -435,14 +412,7 @@ pub fn time_figure(exp: &Experiment, planner: Planner, measure: Measure) -> Figu
                 Stroke::solid(key, 1.5),
             ),
         }
-        text(
-            &mut fig,
-            pt(lx + 40.0, ly_row + 2.0),
-            label,
-            2,
-            Anchor::Start,
-            INK,
-        );
+        legend_label(&mut fig, lx, ly_row, label);
         ly_row += 26.0;
     }
     let legend_w = f64::from(w) - lx - 12.0;
@@ -1053,14 +1023,7 @@ pub fn scaling_figure(
             pt(lx + 30.0, row - 5.0),
             Stroke::solid(color, 2.5),
         );
-        text(
-            &mut fig,
-            pt(lx + 40.0, row + 2.0),
-            label,
-            2,
-            Anchor::Start,
-            INK,
-        );
+        legend_label(&mut fig, lx, row, label);
         row += 26.0;
     }
     text(

@@ -69,14 +69,17 @@ pub struct Band {
 
 /// Most points drawn per series (longer series are thinned).
 pub const MAX_POINTS: usize = 2400;
+// Across, in pixels: the figure, and the margins left (for labels) and right.
 const WIDTH: f64 = 1200.0;
 const LEFT: f64 = 150.0;
 const RIGHT: f64 = 20.0;
+// Ink: labels, and the frames around panels.
+const TEXT: Color = Color(34, 34, 34);
+const FRAME: Color = Color(153, 153, 153);
+// Down, in pixels: a panel, a band row, the gap between them.
 const PANEL: f64 = 80.0;
 const BAND: f64 = 16.0;
 const GAP: f64 = 14.0;
-const TEXT: Color = Color(34, 34, 34);
-const FRAME: Color = Color(153, 153, 153);
 
 fn label(figure: &mut Figure, x: f64, y: f64, text: &str, anchor: Anchor, color: Color) {
     figure.text(pt(x, y), text, 1, anchor, color);

@@ -520,9 +520,15 @@ fn limit_reached(
     if !check.due() {
         return None;
     }
-    check_limits(limits, || {
-        registry.memory_bytes() + info.memory_bytes() + open.memory_bytes()
-    })
+    let own_bytes = || registry.memory_bytes() + info.memory_bytes() + open.memory_bytes();
+    if let Some(outcome) = check_limits(limits, own_bytes) {
+        return Some(outcome);
+    }
+    // Stop before the state table's next doubling if it would not fit, rather than
+    // after it: the limit then holds for the process's peak, not only after the step.
+    let growth = registry.imminent_growth_bytes() as u64;
+    (growth > 0 && limits.would_exceed(growth, || own_bytes() as u64))
+        .then_some(Outcome::MemoryLimit)
 }
 
 /// The outcome the limits call for, if any.

@@ -253,6 +253,28 @@ fn climb_deadline(
     }
 }
 
+/// Which of the caller's limits has been reached, if any: the cancel flag, `deadline`
+/// (the climb's), and the memory limit (the process's use if the caller reads it, else
+/// the tables built so far, `table_bytes`).
+fn resource_limit(
+    limits: &SearchLimits,
+    deadline: Option<Instant>,
+    table_bytes: u64,
+) -> Option<ClimbEnd> {
+    if limits.cancelled() {
+        return Some(ClimbEnd::Cancelled);
+    }
+    if deadline.is_some_and(|d| Instant::now() >= d) {
+        return Some(ClimbEnd::TimeLimit);
+    }
+    let limit = limits.memory_limit_bytes?;
+    let used = match limits.memory_usage {
+        Some(read) => read(),
+        None => table_bytes,
+    };
+    (used > limit).then_some(ClimbEnd::MemoryLimit)
+}
+
 /// The state of a climb.
 struct Climb<'t> {
     task: &'t Task,
@@ -357,8 +379,10 @@ impl<'t> Climb<'t> {
         goal_vars.sort_unstable();
         goal_vars.dedup();
         for var in goal_vars {
-            let pdb = self.build(&[var]);
-            self.add_to_collection(pdb);
+            match self.build(&[var]) {
+                Ok(pdb) => self.add_to_collection(pdb),
+                Err(end) => return end,
+            }
         }
         for p in 0..self.collection.len() {
             if let Some(end) = self.generate_candidates(p) {
@@ -399,12 +423,18 @@ impl<'t> Climb<'t> {
         }
     }
 
-    fn build(&mut self, pattern: &[VarId]) -> PatternDatabase {
+    /// The database of `pattern`, or why the climb ends if a limit is reached while it is
+    /// built (a large task's database takes long: see `PdbBuilder::build_with`).
+    fn build(&mut self, pattern: &[VarId]) -> Result<PatternDatabase, ClimbEnd> {
         let t = Instant::now();
-        let pdb = self.builder.build(pattern);
+        let (limits, deadline, table_bytes) = (self.limits, self.deadline, self.table_bytes);
+        let pdb = self.builder.build_with(pattern, || {
+            resource_limit(limits, deadline, table_bytes).map_or(Ok(()), Err)
+        });
         self.stats.pdb_time += t.elapsed();
+        let pdb = pdb?;
         self.table_bytes += pdb.memory_bytes() as u64;
-        pdb
+        Ok(pdb)
     }
 
     fn add_to_collection(&mut self, pdb: PatternDatabase) {
@@ -423,20 +453,8 @@ impl<'t> Climb<'t> {
 
     /// The time or memory limit that has been reached, if any.
     fn limit_reached(&self) -> Option<ClimbEnd> {
-        if self.limits.cancelled() {
-            return Some(ClimbEnd::Cancelled);
-        }
-        if self.deadline.is_some_and(|d| Instant::now() >= d) {
-            return Some(ClimbEnd::TimeLimit);
-        }
-        if let Some(limit) = self.limits.memory_limit_bytes {
-            let used = match self.limits.memory_usage {
-                Some(read) => read(),
-                None => self.table_bytes,
-            };
-            if used > limit {
-                return Some(ClimbEnd::MemoryLimit);
-            }
+        if let Some(end) = resource_limit(self.limits, self.deadline, self.table_bytes) {
+            return Some(end);
         }
         if self
             .config
@@ -494,7 +512,14 @@ impl<'t> Climb<'t> {
                 self.stats.dropped_patterns += 1;
                 return Some(ClimbEnd::MemoryLimit);
             }
-            let pdb = self.build(&candidate);
+            let pdb = match self.build(&candidate) {
+                Ok(pdb) => pdb,
+                Err(end) => {
+                    // Cut short by a limit: rejected, and the climb ends.
+                    self.stats.dropped_patterns += 1;
+                    return Some(end);
+                }
+            };
             self.generated.insert(candidate);
             self.candidates.push(Some(Candidate {
                 pdb,

@@ -35,6 +35,8 @@
 //! (the widest value of each width means "dead end"). A lookup computes the index from the
 //! unpacked state and reads one entry: O(pattern size), no allocation.
 
+use std::convert::Infallible;
+
 use task::{Limit, Limits, Task, TaskError, VarId};
 
 use crate::astar::SearchError;
@@ -48,6 +50,9 @@ const CAP: u32 = u32::MAX - 1;
 
 /// The largest operator cost for which the backward search uses Dial's buckets.
 const MAX_BUCKET_COST: u32 = 1 << 12;
+/// Steps (operators projected, tree nodes built, abstract states expanded) between two
+/// checks of the limits while a database is built: a few microseconds' work at most.
+const CHECK_EVERY: u32 = 1 << 12;
 
 /// The most abstract states a pattern database may have (2^31).
 pub const MAX_PDB_SIZE: u64 = 1 << 31;
@@ -136,9 +141,8 @@ pub(crate) fn build_collection(
 
 /// Like [`build_collection`], under `limits`: `Ok(Err(Limit::Memory))`, before anything
 /// is allocated, when [`construction_bytes`] of the collection would take memory use
-/// beyond the limit; `Ok(Err(Limit::Time))` when the deadline has passed before a
-/// database is begun (a database once begun is finished: its construction is linear in
-/// its states, which the memory limit bounds).
+/// beyond the limit; `Ok(Err(limit))` when a limit is reached while the databases are
+/// built (checked before each and every [`CHECK_EVERY`] steps inside one).
 pub(crate) fn build_collection_within(
     task: &Task,
     patterns: &[Vec<u32>],
@@ -150,11 +154,15 @@ pub(crate) fn build_collection_within(
     }
     let mut builder = PdbBuilder::new(task);
     let mut pdbs = Vec::with_capacity(normalized.len());
+    let check = || limits.reached(|| 0).map_or(Ok(()), Err);
     for pattern in &normalized {
-        if let Some(limit) = limits.reached(|| 0) {
+        if let Err(limit) = check() {
             return Ok(Err(limit));
         }
-        pdbs.push(builder.build(pattern));
+        match builder.build_with(pattern, check) {
+            Ok(pdb) => pdbs.push(pdb),
+            Err(limit) => return Ok(Err(limit)),
+        }
     }
     Ok(Ok(pdbs))
 }
@@ -440,6 +448,35 @@ impl PdbBuilder {
     /// The database of `pattern`, which must be sorted, free of duplicates, and of at
     /// most [`MAX_PDB_SIZE`] abstract states.
     pub(crate) fn build(&mut self, pattern: &[VarId]) -> PatternDatabase {
+        match self.build_with(pattern, || Ok::<(), Infallible>(())) {
+            Ok(pdb) => pdb,
+            Err(never) => match never {},
+        }
+    }
+
+    /// Like [`PdbBuilder::build`], calling `stop` every [`CHECK_EVERY`] steps of the
+    /// projection, the match tree and the abstract search, and giving up with its error.
+    /// A database is not linear in its states: each state's step visits its applicable
+    /// abstract operators, of which a large task has many (scanalyzer's p19, 49,572
+    /// operators, needs minutes for six variables of ten values each), so the limits are
+    /// checked inside it as well as between databases.
+    pub(crate) fn build_with<E>(
+        &mut self,
+        pattern: &[VarId],
+        mut stop: impl FnMut() -> Result<(), E>,
+    ) -> Result<PatternDatabase, E> {
+        let result = self.build_checked(pattern, &mut stop);
+        for &var in pattern {
+            self.position[var.index()] = NONE;
+        }
+        result
+    }
+
+    fn build_checked<E>(
+        &mut self,
+        pattern: &[VarId],
+        stop: &mut impl FnMut() -> Result<(), E>,
+    ) -> Result<PatternDatabase, E> {
         let vars: Vec<u32> = pattern.iter().map(|v| v.0).collect();
         let mut multipliers = Vec::with_capacity(vars.len());
         let mut size: u32 = 1;
@@ -451,12 +488,9 @@ impl PdbBuilder {
         self.pos_domain.clear();
         self.pos_domain
             .extend(vars.iter().map(|&v| self.domain[v as usize]));
-        self.project(&vars, &multipliers);
-        self.build_tree(&multipliers);
-        self.search(&multipliers, size as usize);
-        for &var in &vars {
-            self.position[var as usize] = NONE;
-        }
+        self.project(&vars, &multipliers, stop)?;
+        self.build_tree(&multipliers, stop)?;
+        self.search(&multipliers, size as usize, stop)?;
         let distances = &self.distances[..size as usize];
         let has_dead_ends = distances.contains(&DEAD);
         let max = distances.iter().filter(|&&d| d != DEAD).max().copied();
@@ -475,18 +509,24 @@ impl PdbBuilder {
                     .collect(),
             ),
         };
-        PatternDatabase {
+        Ok(PatternDatabase {
             pattern: pattern.to_vec(),
             vars,
             multipliers,
             distances: table,
             has_dead_ends,
-        }
+        })
     }
 
     /// Fills `ops` and `conditions` with the deduplicated regression operators of the
     /// projection onto `vars` (positions are set in `position`).
-    fn project(&mut self, vars: &[u32], multipliers: &[u32]) {
+    fn project<E>(
+        &mut self,
+        vars: &[u32],
+        multipliers: &[u32],
+        stop: &mut impl FnMut() -> Result<(), E>,
+    ) -> Result<(), E> {
+        let mut steps: u32 = 0;
         self.conditions.clear();
         self.ops.clear();
         self.stamp = self.stamp.wrapping_add(1);
@@ -504,6 +544,10 @@ impl PdbBuilder {
                 }
                 self.op_mark[o] = self.stamp;
                 self.project_operator(o, multipliers);
+                steps = steps.wrapping_add(1);
+                if steps.is_multiple_of(CHECK_EVERY) {
+                    stop()?;
+                }
             }
         }
         // Keep the cheapest of each (conditions, delta).
@@ -554,6 +598,7 @@ impl PdbBuilder {
             }
         }
         self.ops = undominated;
+        Ok(())
     }
 
     /// Adds the regression operators of task operator `o` to `ops`.
@@ -629,7 +674,12 @@ impl PdbBuilder {
     /// Builds the match tree over `ops` into `nodes`, `children` and `leaf_ops`, without
     /// allocating per node: a work stack of ranges of `items` (operator, next condition),
     /// each split by a counting sort on the value of the position switched on.
-    fn build_tree(&mut self, multipliers: &[u32]) {
+    fn build_tree<E>(
+        &mut self,
+        multipliers: &[u32],
+        stop: &mut impl FnMut() -> Result<(), E>,
+    ) -> Result<(), E> {
+        let mut steps: u32 = 0;
         self.nodes.clear();
         self.children.clear();
         self.leaf_ops.clear();
@@ -644,6 +694,10 @@ impl PdbBuilder {
         self.work.clear();
         self.work.push((0, 0, self.items.len() as u32));
         while let Some((node, start, end)) = self.work.pop() {
+            steps = steps.wrapping_add(1);
+            if steps.is_multiple_of(CHECK_EVERY) {
+                stop()?;
+            }
             let (start, end) = (start as usize, end as usize);
             // Operators with every condition tested go first and stay at this node.
             let mut done = start;
@@ -725,10 +779,25 @@ impl PdbBuilder {
             }
             self.nodes[node as usize] = this;
         }
+        Ok(())
     }
 
     /// Backward search from the abstract goal states: fills `distances[..size]`.
-    fn search(&mut self, multipliers: &[u32], size: usize) {
+    fn search<E>(
+        &mut self,
+        multipliers: &[u32],
+        size: usize,
+        stop: &mut impl FnMut() -> Result<(), E>,
+    ) -> Result<(), E> {
+        let mut steps: u32 = 0;
+        let mut step = || {
+            steps = steps.wrapping_add(1);
+            if steps.is_multiple_of(CHECK_EVERY) {
+                stop()
+            } else {
+                Ok(())
+            }
+        };
         self.distances.clear();
         self.distances.resize(size, DEAD);
         // The goal states: goal values fixed, every other position free.
@@ -799,6 +868,7 @@ impl PdbBuilder {
                     next = next.saturating_add(first_cost).min(CAP);
                 }
                 head += 1;
+                step()?;
                 tree.for_each_applicable(s, &mut self.stack, |delta, _| {
                     let t = s.wrapping_add(delta) as usize;
                     if !is_set(seen, t) {
@@ -830,6 +900,7 @@ impl PdbBuilder {
                     if dist[s as usize] != current {
                         continue; // A stale entry: reached more cheaply since.
                     }
+                    step()?;
                     tree.for_each_applicable(s, &mut self.stack, |delta, cost| {
                         let t = s.wrapping_add(delta) as usize;
                         let next = current + cost;
@@ -852,6 +923,7 @@ impl PdbBuilder {
                 if d > u64::from(dist[s as usize]) {
                     continue; // A stale entry.
                 }
+                step()?;
                 tree.for_each_applicable(s, &mut self.stack, |delta, cost| {
                     let t = s.wrapping_add(delta) as usize;
                     let next = (d + u64::from(cost)).min(u64::from(CAP)) as u32;
@@ -862,6 +934,7 @@ impl PdbBuilder {
                 });
             }
         }
+        Ok(())
     }
 }
 
@@ -1082,6 +1155,71 @@ mod tests {
             assert!((0..unit.size()).all(|i| unit.value_at(i).is_none() == tables[0][i].is_none()));
             assert_eq!(tables[0], tables[1], "round {round}");
             assert_eq!(tables[0], tables[2], "round {round}");
+        }
+    }
+
+    /// Four counters of 0..16 (65,536 abstract states), each stepped up by one operator
+    /// per value, at `cost` (or `cost + 1` on odd values, so that costs differ).
+    fn counters(cost: u64, varied: bool) -> Task {
+        let mut operators = Vec::new();
+        for v in 0..4u32 {
+            for value in 0..15u32 {
+                let c = if varied && value % 2 == 1 {
+                    cost + 1
+                } else {
+                    cost
+                };
+                operators.push(op(
+                    &format!("up{v}-{value}"),
+                    &[(v, value)],
+                    &[(v, value + 1)],
+                    c,
+                ));
+            }
+        }
+        Task {
+            variables: (0..4).map(|v| var(&format!("c{v}"), 16)).collect(),
+            mutexes: vec![],
+            initial_state: vec![0; 4],
+            goal: (0..4).map(|v| Fact::new(VarId(v), 15)).collect(),
+            operators,
+            use_costs: true,
+        }
+    }
+
+    /// A database given up at a limit (the abstract search of every queue is checked, not
+    /// only the start of a database) leaves the builder as it was: the next database it
+    /// builds equals a fresh builder's.
+    #[test]
+    fn a_database_stops_where_its_limit_says_and_the_builder_goes_on() {
+        let pattern: Vec<VarId> = (0..4).map(VarId).collect();
+        // Unit costs (breadth-first), costs 1 and 2 (buckets), large costs (radix heap).
+        for task in [
+            counters(1, false),
+            counters(1, true),
+            counters(1 << 20, true),
+        ] {
+            let mut builder = PdbBuilder::new(&task);
+            let mut calls = 0;
+            let stopped = builder.build_with(&pattern, || {
+                calls += 1;
+                if calls < 3 {
+                    Ok(())
+                } else {
+                    Err("limit")
+                }
+            });
+            assert_eq!(stopped.err(), Some("limit"));
+            // 65,536 states and 60 operators: the third check is inside the search.
+            assert_eq!(calls, 3);
+            let after = builder.build(&pattern);
+            let fresh = PdbBuilder::new(&task).build(&pattern);
+            assert_eq!(after.size(), 1 << 16);
+            assert!((0..after.size()).all(|i| after.value_at(i) == fresh.value_at(i)));
+            assert_eq!(
+                fresh.value_at(0),
+                Some(task.operators.iter().map(|o| o.cost).sum())
+            );
         }
     }
 }

@@ -239,11 +239,51 @@ impl StateRegistry {
     pub fn memory_bytes(&self) -> usize {
         self.arena.memory_bytes() + self.table.allocation_size()
     }
+
+    /// The bytes the lookup table's next growth will allocate, once it is within a
+    /// sixteenth of its capacity (else 0). A table grows by doubling, allocating the new
+    /// one while the old is alive: a single step of tens of megabytes on a large search,
+    /// which a memory check made only after it would see too late.
+    pub fn imminent_growth_bytes(&self) -> usize {
+        let capacity = self.table.capacity();
+        let left = capacity.saturating_sub(self.table.len());
+        if capacity > 0 && left <= capacity / 16 {
+            self.table.allocation_size().saturating_mul(2)
+        } else {
+            0
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The growth is announced before the table doubles (so that the search can stop
+    /// first), with about the size of the new table, and not otherwise.
+    #[test]
+    fn the_state_table_announces_its_doubling_before_it_happens() {
+        let mut registry = StateRegistry::new(1);
+        let mut announced = 0;
+        let mut doublings = 0;
+        for i in 0..100_000u64 {
+            let (before, growth) = (registry.memory_bytes(), registry.imminent_growth_bytes());
+            if growth > 0 {
+                announced += 1;
+            }
+            let capacity = registry.table.capacity();
+            registry.insert(&[i]);
+            if registry.table.capacity() > capacity && capacity >= 1024 {
+                doublings += 1;
+                // The step just taken was announced, at twice the old table.
+                assert!(growth > 0, "state {i}: the doubling came unannounced");
+                assert!(registry.memory_bytes() - before <= growth, "state {i}");
+            }
+        }
+        assert!(doublings >= 5);
+        // Announced only near a doubling: a sixteenth of the states at most, roughly.
+        assert!(announced < 100_000 / 8, "{announced}");
+    }
 
     #[test]
     fn bits() {

@@ -36,6 +36,14 @@ fn values(table: &ArffTable) -> Vec<Vec<&str>> {
         .collect()
 }
 
+/// The fixture `name` read, after checking its relation and attribute names.
+fn fixture_table(name: &str, relation: &str, attributes: &[&str]) -> ArffTable {
+    let table = read_arff(&fixture(name)).unwrap();
+    assert_eq!(table.relation, relation);
+    assert_eq!(names(&table), attributes);
+    table
+}
+
 fn names(table: &ArffTable) -> Vec<&str> {
     table.attributes.iter().map(|a| a.name.as_str()).collect()
 }
@@ -52,18 +60,17 @@ fn names(table: &ArffTable) -> Vec<&str> {
 /// ```
 #[test]
 fn tab_separated_with_comments() {
-    let table = read_arff(&fixture("tabs.arff")).unwrap();
-    assert_eq!(table.relation, "tabbed");
-    assert_eq!(
-        names(&table),
-        [
+    let table = fixture_table(
+        "tabs.arff",
+        "tabbed",
+        &[
             "Hand",
             "ObjectActedOn",
             "ObjectInHand",
             "HandState",
             "Time",
-            "Activity"
-        ]
+            "Activity",
+        ],
     );
     assert_eq!(
         table.attributes[1].kind,
@@ -122,11 +129,10 @@ fn tab_separated_with_comments() {
 /// ```
 #[test]
 fn quoted_names_values_and_escapes() {
-    let table = read_arff(&fixture("quoted.arff")).unwrap();
-    assert_eq!(table.relation, "pick and place: \"red\"");
-    assert_eq!(
-        names(&table),
-        ["Hand", "ObjectActedOn", "ObjectInHand", "Activity", "note"]
+    let table = fixture_table(
+        "quoted.arff",
+        "pick and place: \"red\"",
+        &["Hand", "ObjectActedOn", "ObjectInHand", "Activity", "note"],
     );
     assert_eq!(
         table.attributes[1].kind,

@@ -148,9 +148,91 @@ pub fn manifest(study: &Study, seed: u64, params: &SimParams, written: &[Written
     serde_json::to_string_pretty(&manifest).unwrap_or_default() + "\n"
 }
 
+/// Why a study could not be written to its folder.
+#[derive(Debug, thiserror::Error)]
+pub enum WriteStudyError {
+    /// The folder could not be made.
+    #[error("cannot create {}: {source}", path.display())]
+    Folder {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    /// A recording, its truth or the manifest could not be written (it is unchanged).
+    #[error(transparent)]
+    File(#[from] atomic_write::WriteError),
+}
+
+/// Writes `study` (simulated with `seed` and `params`) into the folder `out`, as
+/// `demoplan simulate -o out` does: per demonstration its recording, then its ground
+/// truth, each whole or not at all, and then the manifest, which lists only what is in
+/// place. Says what was written of each demonstration, in the study's order.
+pub fn write_study(
+    study: &Study,
+    seed: u64,
+    params: &SimParams,
+    out: &Path,
+) -> Result<Vec<Written>, WriteStudyError> {
+    std::fs::create_dir_all(out).map_err(|source| WriteStudyError::Folder {
+        path: out.to_path_buf(),
+        source,
+    })?;
+    let mut all = Vec::with_capacity(study.demonstrations.len());
+    for demo in &study.demonstrations {
+        // The truth is rendered beside the frames, so it is kept until the recording is
+        // in place; it is a small part of the recording's size.
+        let mut truth = Vec::new();
+        let mut written = Written {
+            frames: 0,
+            seconds: 0.0,
+        };
+        atomic_write::write_atomically_with(&out.join(demo.recording_name()), |file| {
+            written = demo.write(file, &mut truth)?;
+            Ok(())
+        })?;
+        atomic_write::write_atomically(&out.join(demo.truth_name()), &truth)?;
+        all.push(written);
+    }
+    atomic_write::write_atomically(&out.join(MANIFEST), manifest(study, seed, params, &all))?;
+    Ok(all)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_written_study_has_each_recording_with_its_truth_and_the_manifest() {
+        let dir = std::env::temp_dir().join(format!("simulate-write-study-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let params = SimParams::default();
+        let study = crate::study(&params, 3, 1, 2).unwrap();
+        let written = write_study(&study, 3, &params, &dir.join("out")).unwrap();
+        assert_eq!(written.len(), 2);
+        for (demo, w) in study.demonstrations.iter().zip(&written) {
+            let (mut recording, mut truth) = (Vec::new(), Vec::new());
+            assert_eq!(demo.write(&mut recording, &mut truth).unwrap(), *w);
+            let out = dir.join("out");
+            assert_eq!(
+                std::fs::read(out.join(demo.recording_name())).unwrap(),
+                recording
+            );
+            assert_eq!(std::fs::read(out.join(demo.truth_name())).unwrap(), truth);
+        }
+        assert_eq!(
+            std::fs::read_to_string(dir.join("out").join(MANIFEST)).unwrap(),
+            manifest(&study, 3, &params, &written)
+        );
+        // A folder that cannot be made (a file stands in its way) names it.
+        std::fs::write(dir.join("file"), "").unwrap();
+        let e = write_study(&study, 3, &params, &dir.join("file").join("out")).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with(&format!("cannot create {}", dir.join("file/out").display())),
+            "{e}"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     #[test]
     fn a_demonstration_writes_its_recording_and_its_truth_in_step() {

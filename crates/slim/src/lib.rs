@@ -7,6 +7,7 @@
 //! out of time. A [`Backend`] plans one task: demoplan's own planner in-process, or an
 //! installed Fast Downward run as a separate program (never linked: it is GPL).
 
+mod exit_code;
 mod fast_downward;
 mod logged;
 mod printout;
@@ -14,6 +15,7 @@ mod run;
 
 use std::time::{Duration, Instant};
 
+pub use exit_code::ExitCode;
 pub use fast_downward::{parse_log, FastDownward, FdLog};
 pub use logged::{plan_logged, LoggedRun, PlanInput, RunError, StatisticsRecord};
 pub use printout::{compare_full, level_header, level_row};

@@ -4,8 +4,8 @@ use std::path::Path;
 
 use crate::cli::CheckArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
+use slim::ExitCode;
 
 pub fn run(args: CheckArgs) -> Result<ExitCode, Failure> {
     let (domain_path, problem_path) = match args.files.as_slice() {

@@ -15,8 +15,8 @@ use segment::{Activity, ActivityTree, Confusion, LabelMap, C45};
 use crate::cli::ClassifyArgs;
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output::{self, write_atomically};
+use slim::ExitCode;
 
 pub fn run(args: ClassifyArgs) -> Result<ExitCode, Failure> {
     if args.learn {

@@ -11,9 +11,9 @@ use segment::{ActivityTree, DecisionTree, LabelMap};
 
 use crate::cli::SegmentationArgs;
 use crate::diagnostic::{render, Failure, SourceDiagnostic};
-use crate::exit::ExitCode;
 use crate::input;
 use crate::recording_input;
+use slim::ExitCode;
 
 /// An input error (exit 31) at `line` (1-based; 0: none known) and `column` (1-based;
 /// 0: the whole line) of `text`, naming `field`.
@@ -55,7 +55,7 @@ pub fn text_failure(
         (at, token.max(1).min(line_text.len().saturating_sub(at)))
     };
     let diagnostic = SourceDiagnostic {
-        code,
+        code: code.to_string(),
         message: message.to_string(),
         help: None,
         label,

@@ -5,9 +5,9 @@ use std::path::Path;
 
 use crate::cli::ExecuteArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
 use crate::output::{write_atomically, write_atomically_with};
+use slim::ExitCode;
 
 pub fn run(args: ExecuteArgs) -> Result<ExitCode, Failure> {
     let task = input::read_task(&args.domain, &args.problem)?;

@@ -2,9 +2,9 @@
 
 use crate::cli::FmtArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
 use crate::output::write_atomically;
+use slim::ExitCode;
 
 pub fn run(args: FmtArgs) -> Result<ExitCode, Failure> {
     let (check, stdout) = (args.check, args.stdout);

@@ -2,15 +2,13 @@
 //! to native recordings `DIR/STEM.jsonl`, with a report per file and the mapping used.
 
 use std::collections::BTreeMap;
-use std::fmt::Write as _;
 
 use crate::cli::ImportArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output;
 use crate::progress::BytesBar;
 use crate::recording_input;
-use import::SourceKind;
+use slim::ExitCode;
 
 /// Sources this large show a progress bar on a terminal.
 const PROGRESS_FROM: u64 = 16 << 20;
@@ -45,12 +43,7 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
     for planned in &plan {
         let (source, out) = (&planned.source, &planned.out);
         let mapping = &mappings[planned.format().name()];
-        // A folder's size is its MCAP files' (the bag knows them); a file's is its own.
-        let size = match planned.kind {
-            SourceKind::Bag(_) => import::ros::bag_size(source).ok(),
-            _ => None,
-        };
-        let size = size.unwrap_or_else(|| std::fs::metadata(source).map_or(0, |m| m.len()));
+        let size = planned.size();
         let passes = import::SOURCE_PASSES;
         // Opening a bag lists its topics (a read through an MCAP bag, the index of a
         // ROS 1 bag); then each pass reads the whole source.
@@ -89,23 +82,9 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
         let Some((header, report)) = result else {
             continue;
         };
-        let _ = writeln!(text, "{} -> {}", source.display(), out.display());
-        for line in report.render(&header).lines() {
-            let _ = writeln!(text, "  {line}");
-        }
+        text.push_str(&planned.imported(&header, &report));
     }
-    for (format, mapping) in &mappings {
-        let which = if mappings.len() > 1 {
-            format!(" for {format} sources")
-        } else {
-            String::new()
-        };
-        let _ = writeln!(
-            text,
-            "\nmapping used{which} (save it, edit it and pass it with --mapping):\n"
-        );
-        text.push_str(&mapping.to_toml());
-    }
+    text.push_str(&import::mappings_used(&mappings));
     print!("{text}");
     if args.peak_heap {
         eprintln!("peak heap: {} bytes", crate::memory::peak_heap());

@@ -5,8 +5,8 @@ use recording::{Frame, Summary};
 
 use crate::cli::InspectArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::recording_input;
+use slim::ExitCode;
 
 pub fn run(args: InspectArgs) -> Result<ExitCode, Failure> {
     let mut out = String::new();

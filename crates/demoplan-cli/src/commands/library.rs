@@ -11,8 +11,8 @@ use learn::{
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output::write_atomically;
+use slim::ExitCode;
 
 /// Reads a library file: a missing file is a command line error (36), a damaged or newer
 /// one an input error (31) that names the line.
@@ -43,27 +43,9 @@ impl From<UpdateError> for Failure {
     fn from(e: UpdateError) -> Failure {
         match e {
             UpdateError::Read(e) => read_failure(e),
-            e @ UpdateError::Hash { .. } => Failure::plain(ExitCode::USAGE, e),
-            UpdateError::Lambda {
-                path,
-                asked,
-                library,
-            } => differs(
-                format!("--lambda {asked}"),
-                format!("lambda {library}"),
-                &path,
-                "costs of one library use one lambda",
-            ),
-            UpdateError::Grouping {
-                path,
-                asked,
-                library,
-            } => differs(
-                format!("--activities {}", asked.name()),
-                format!("`{}` activities", library.name()),
-                &path,
-                "one library counts activities of one kind",
-            ),
+            e @ (UpdateError::Hash { .. }
+            | UpdateError::Lambda { .. }
+            | UpdateError::Grouping { .. }) => Failure::plain(ExitCode::USAGE, e),
             UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
                 ExitCode::LOCKED,
                 format!(
@@ -76,17 +58,6 @@ impl From<UpdateError> for Failure {
             }
         }
     }
-}
-
-/// An option that differs from the library's setting: a command line error (36).
-fn differs(asked: String, library: String, path: &Path, why: &str) -> Failure {
-    Failure::plain(
-        ExitCode::USAGE,
-        format!(
-            "{asked} differs from the library's {library} ({}); {why}",
-            path.display()
-        ),
-    )
 }
 
 /// Learning in two phases around the library's lock ([`learn::Update`]), so that

@@ -20,7 +20,7 @@ pub mod validate;
 
 use crate::cli::Command;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
+use slim::ExitCode;
 
 /// Runs a parsed command.
 pub fn run(command: Command) -> Result<ExitCode, Failure> {

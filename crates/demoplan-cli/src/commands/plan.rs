@@ -7,8 +7,8 @@ use std::time::Instant;
 use crate::cli::PlanArgs;
 use crate::commands::translate::{domain_and_problem, read_parsed};
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::{input, memory, output};
+use slim::ExitCode;
 use task::units::{parse_memory_limit, parse_time_limit};
 
 /// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or
@@ -102,16 +102,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             )
         }
     };
-    let logged = logged.map_err(|e| match e {
-        slim::RunError::Translate(e) => Failure::plain(
-            ExitCode::INPUT_ERROR,
-            format!("{}: {e}", problem_path.display()),
-        ),
-        slim::RunError::Search(e @ search::SearchError::CostTooLarge { .. }) => {
-            Failure::plain(ExitCode::UNSUPPORTED, e.to_string())
-        }
-        slim::RunError::Search(e) => Failure::plain(ExitCode::SEARCH_INPUT_ERROR, e.to_string()),
-    })?;
+    let logged = logged.map_err(|e| Failure::plain(e.exit_code(), e.message(&problem_path)))?;
     let solved = logged.run.plan_text();
     if let Some(text) = &solved {
         output::write_atomically(&args.plan_file, text)?;
@@ -139,14 +130,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             ));
         }
     }
-    Ok(match logged.run.outcome {
-        slim::Outcome::Solved => ExitCode::SUCCESS,
-        slim::Outcome::TimeLimit => ExitCode::OUT_OF_TIME,
-        slim::Outcome::MemoryLimit => ExitCode::OUT_OF_MEMORY,
-        slim::Outcome::Unsolvable | slim::Outcome::RelaxedUnreachable => ExitCode::UNSOLVABLE,
-        // Nothing sets the command line's cancel flag (it has none): Ctrl-C kills it.
-        slim::Outcome::Cancelled | slim::Outcome::Error => ExitCode::CRITICAL_SEARCH_ERROR,
-    })
+    Ok(logged.run.outcome.exit_code())
 }
 
 fn read_sas(path: &Path) -> Result<task::Task, Failure> {

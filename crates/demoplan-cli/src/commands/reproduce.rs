@@ -7,22 +7,13 @@ use slim::FastDownward;
 use crate::cli::{FastDownwardArgs, ReproduceArgs};
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::progress::Bar;
+use slim::ExitCode;
 
-/// An experiment's error as a failure with its exit code: a bad option is a command
-/// line error (36), a damaged results file an input error (31), a file that cannot be
-/// written a critical error (35).
+/// An experiment's error as a failure with its exit code
+/// ([`experiment::ExperimentError::exit_code`]).
 pub fn experiment_failure(e: experiment::ExperimentError) -> Failure {
-    use experiment::ExperimentError as E;
-    let code = match &e {
-        E::Options(_) | E::FastDownwardMissing | E::Params { .. } => ExitCode::USAGE,
-        E::Condition(_) | E::Results { .. } => ExitCode::INPUT_ERROR,
-        // Some cells of the grid have no result: running it again computes them.
-        E::Incomplete { .. } => ExitCode::CHECK_FAILED,
-        E::Io { .. } => ExitCode::CRITICAL_ERROR,
-    };
-    Failure::plain(code, e.to_string())
+    Failure::plain(e.exit_code(), e)
 }
 
 /// A `--time-limit`: Fast Downward's units; `infinity` (or none) is no limit worth the
@@ -106,28 +97,9 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let done = result.map_err(experiment_failure)?;
     print!("{}", done.summary);
     print!("{}", done.tables);
-    println!(
-        "Wrote {} ({} runs in {:.0} s): open {}",
-        options.out.display(),
-        done.records.len(),
-        started.elapsed().as_secs_f64(),
-        done.report.display()
-    );
-    if done.crashed > 0 {
-        eprintln!(
-            "error: {} cell(s) crashed (their records in results.jsonl say why; run again \
-             to compute them)",
-            done.crashed
-        );
+    print!("{}", done.closing_line(&options.out, started.elapsed()));
+    if let Some(failures) = done.failures() {
+        eprint!("{failures}");
     }
-    if done.failed_executions > 0 {
-        eprintln!(
-            "error: {} plan(s) failed the execution check (see tables.md)",
-            done.failed_executions
-        );
-    }
-    if done.crashed > 0 || done.failed_executions > 0 {
-        return Ok(ExitCode::CHECK_FAILED);
-    }
-    Ok(ExitCode::SUCCESS)
+    Ok(done.exit_code())
 }

@@ -6,8 +6,8 @@ use std::io::Write;
 use crate::cli::SegmentArgs;
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output::{self, stdout_failure};
+use slim::ExitCode;
 
 pub fn run(args: SegmentArgs) -> Result<ExitCode, Failure> {
     let segmentation = demo_input::segmentation(&args.segmentation)?;

@@ -1,15 +1,12 @@
 //! `demoplan simulate -o DIR`: simulated demonstrations of people stacking cubes, each a
 //! recording in the native format with its ground truth beside it, and a manifest.
 
-use std::path::Path;
-
 use simulate::MANIFEST;
 
 use crate::cli::SimulateArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
-use crate::output::{write_atomically, write_atomically_with};
+use slim::ExitCode;
 
 pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
     let mut params = input::sim_params(args.params.as_deref())?;
@@ -26,22 +23,14 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
             };
             Failure::plain(ExitCode::USAGE, format!("{flag}{e}"))
         })?;
-    std::fs::create_dir_all(&args.out).map_err(|e| {
-        Failure::plain(
-            ExitCode::CRITICAL_ERROR,
-            format!("cannot create {}: {e}", args.out.display()),
-        )
-    })?;
-    let mut listing = String::new();
-    let mut written = Vec::new();
-    for demo in &study.demonstrations {
-        let path = args.out.join(demo.recording_name());
-        let w = write_demonstration(demo, &path, &args.out.join(demo.truth_name()))?;
-        listing.push_str(&demo.listing_line(w));
-        written.push(w);
-    }
-    let manifest = simulate::manifest(&study, args.seed, &params, &written);
-    write_atomically(&args.out.join(MANIFEST), &manifest)?;
+    let written = simulate::write_study(&study, args.seed, &params, &args.out)
+        .map_err(|e| Failure::plain(ExitCode::CRITICAL_ERROR, e))?;
+    let listing: String = study
+        .demonstrations
+        .iter()
+        .zip(&written)
+        .map(|(demo, w)| demo.listing_line(*w))
+        .collect();
     let total_frames: u64 = written.iter().map(|w| w.frames).sum();
     let total_seconds: f64 = written.iter().map(|w| w.seconds).sum();
     print!("{listing}");
@@ -52,27 +41,4 @@ pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
         args.out.display()
     );
     Ok(ExitCode::SUCCESS)
-}
-
-/// Writes the recording and its ground truth, each atomically; says what was written.
-fn write_demonstration(
-    demo: &simulate::Demonstration,
-    path: &Path,
-    truth_path: &Path,
-) -> Result<simulate::Written, Failure> {
-    // The truth is rendered beside the frames, so it is kept until the recording is in
-    // place; it is a small part of the recording's size.
-    let mut truth = Vec::new();
-    let mut written = None;
-    write_atomically_with(path, |out| {
-        written = Some(demo.write(out, &mut truth)?);
-        Ok(())
-    })?;
-    write_atomically_with(truth_path, |out| out.write_all(&truth))?;
-    written.ok_or_else(|| {
-        Failure::plain(
-            ExitCode::CRITICAL_ERROR,
-            format!("cannot write {}", path.display()),
-        )
-    })
 }

@@ -8,9 +8,9 @@ use slim::{Backend, FastDownward, PlannerName};
 use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
 use crate::output::write_atomically;
+use slim::ExitCode;
 
 fn read_problem(path: &Path) -> Result<pddl::Problem, Failure> {
     let text = input::read_text(path)?;
@@ -31,8 +31,8 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
-    let backend = match PlannerName::from_name(&args.planner) {
-        Some(PlannerName::Demoplan) => {
+    let backend = match args.planner {
+        PlannerName::Demoplan => {
             Backend::Demoplan(search::parse_search(&args.search).map_err(|e| {
                 Failure::plain(
                     ExitCode::SEARCH_INPUT_ERROR,
@@ -40,22 +40,11 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
                 )
             })?)
         }
-        Some(PlannerName::FastDownward) => Backend::FastDownward(
+        PlannerName::FastDownward => Backend::FastDownward(
             FastDownward::locate(args.fd.as_deref())
                 .map_err(|e| Failure::plain(ExitCode::USAGE, e))?,
             args.search.clone(),
         ),
-        None => {
-            let names: Vec<&str> = PlannerName::ALL.iter().map(|p| p.name()).collect();
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                format!(
-                    "--planner {}: expected {}",
-                    args.planner,
-                    names.join(" or ")
-                ),
-            ));
-        }
     };
     let options = DomainOptions {
         keep_without_effects: args.keep_without_effects,

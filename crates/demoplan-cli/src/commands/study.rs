@@ -8,9 +8,9 @@ use crate::commands::reproduce::{
     cell_command, experiment_failure, fast_downward, print_cell, time_limit,
 };
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
 use crate::progress::Bar;
+use slim::ExitCode;
 
 fn usage(option: &str, message: String) -> Failure {
     Failure::plain(ExitCode::USAGE, format!("{option}: {message}"))
@@ -71,26 +71,12 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();
     let done = result.map_err(experiment_failure)?;
-    println!(
-        "Study: {} runs ({} computed now, {} from earlier results, {jobs} at a time) in \
-         {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}",
-        done.records.len(),
-        done.computed,
-        done.records.len() - done.computed,
-        started.elapsed().as_secs_f64(),
-        done.failed_executions,
-        options.out.display(),
-        done.report.display()
+    print!(
+        "{}",
+        done.closing_line(&options.out, jobs, started.elapsed())
     );
-    if done.crashed > 0 {
-        eprintln!(
-            "error: {} cell(s) crashed (their records in results.jsonl say why; run again \
-             to compute them)",
-            done.crashed
-        );
+    if let Some(failures) = done.failures() {
+        eprint!("{failures}");
     }
-    if done.failed_executions > 0 || done.crashed > 0 {
-        return Ok(ExitCode::CHECK_FAILED);
-    }
-    Ok(ExitCode::SUCCESS)
+    Ok(done.exit_code())
 }

@@ -5,8 +5,8 @@
 use crate::cli::TimelineArgs;
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::output::write_atomically;
+use slim::ExitCode;
 
 pub fn run(args: TimelineArgs) -> Result<ExitCode, Failure> {
     if args

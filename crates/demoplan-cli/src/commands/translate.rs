@@ -5,8 +5,8 @@ use std::time::Instant;
 
 use crate::cli::TranslateArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::{input, output};
+use slim::ExitCode;
 
 /// Resolves `[DOMAIN] PROBLEM` (Fast Downward's rules when the domain is omitted).
 pub fn domain_and_problem(files: &[PathBuf]) -> Result<(PathBuf, PathBuf), Failure> {

@@ -5,8 +5,8 @@ use std::path::{Path, PathBuf};
 
 use crate::cli::ValidateArgs;
 use crate::diagnostic::Failure;
-use crate::exit::ExitCode;
 use crate::input;
+use slim::ExitCode;
 
 pub fn run(args: ValidateArgs) -> Result<ExitCode, Failure> {
     validate_plans(&args.domain, &args.problem, &args.plans)

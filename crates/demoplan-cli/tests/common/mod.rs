@@ -35,6 +35,16 @@ pub fn tempdir(name: &str) -> PathBuf {
     dir
 }
 
+/// The names of the entries of `dir`, sorted.
+pub fn entry_names(dir: &Path) -> Vec<String> {
+    let mut names = Vec::new();
+    for entry in std::fs::read_dir(dir).unwrap() {
+        names.push(entry.unwrap().file_name().to_string_lossy().into_owned());
+    }
+    names.sort();
+    names
+}
+
 /// Exit code, standard output and standard error, as one text to snapshot.
 pub fn transcript(out: &Output) -> String {
     format!(

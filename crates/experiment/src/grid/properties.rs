@@ -88,7 +88,7 @@ impl LabNames {
     }
 
     fn of_record(r: &RunRecord) -> LabNames {
-        Self::from_parts(&r.conditions, &r.level, r.planner, r.repeat)
+        Self::from_parts(&r.conditions, &r.level.name(), r.planner, r.repeat)
     }
 
     /// Lab's `id` of the run, and the key of the combined properties (`-`-joined).

@@ -10,8 +10,9 @@ use crate::{ExperimentError, Reproduction, StudyOutcome};
 
 impl ExperimentError {
     /// A bad option is a command line error (36), a cell that cannot be set up or a
-    /// damaged results file an input error (31), a file that cannot be read or written
-    /// an I/O error (35).
+    /// damaged results file an input error (31), cells without a result when a grid is
+    /// collected a failed check (1: running the grid again computes them), a file that
+    /// cannot be read or written an I/O error (35).
     pub fn exit_code(&self) -> ExitCode {
         match self {
             ExperimentError::Options(_)
@@ -20,19 +21,38 @@ impl ExperimentError {
             ExperimentError::Condition(_) | ExperimentError::Results { .. } => {
                 ExitCode::INPUT_ERROR
             }
+            ExperimentError::Incomplete { .. } => ExitCode::CHECK_FAILED,
             ExperimentError::Io { .. } => ExitCode::CRITICAL_ERROR,
         }
     }
 }
 
-/// A grid whose plans all passed the execution check succeeded; one that failed it is a
-/// failed check (1).
-fn checked(failed_executions: usize) -> ExitCode {
-    if failed_executions > 0 {
+/// A grid whose cells all ran and whose plans all passed the execution check succeeded;
+/// a crashed cell or a failed check is a failed check (1).
+fn checked(crashed: usize, failed_executions: usize) -> ExitCode {
+    if crashed > 0 || failed_executions > 0 {
         ExitCode::CHECK_FAILED
     } else {
         ExitCode::SUCCESS
     }
+}
+
+/// What failed, for standard error: cells whose process crashed (their records say why,
+/// and the next run computes them again) and plans that failed the execution check.
+fn failures(crashed: usize, failed_executions: usize) -> Option<String> {
+    let mut text = String::new();
+    if crashed > 0 {
+        text.push_str(&format!(
+            "error: {crashed} cell(s) crashed (their records in results.jsonl say why; run \
+             again to compute them)\n"
+        ));
+    }
+    if failed_executions > 0 {
+        text.push_str(&format!(
+            "error: {failed_executions} plan(s) failed the execution check (see tables.md)\n"
+        ));
+    }
+    (!text.is_empty()).then_some(text)
 }
 
 impl Reproduction {
@@ -47,19 +67,15 @@ impl Reproduction {
         )
     }
 
-    /// What failed, for standard error: the plans that failed the execution check.
+    /// What failed, for standard error: crashed cells and plans that failed the
+    /// execution check.
     pub fn failures(&self) -> Option<String> {
-        (self.failed_executions > 0).then(|| {
-            format!(
-                "error: {} plan(s) failed the execution check (see tables.md)\n",
-                self.failed_executions
-            )
-        })
+        failures(self.crashed, self.failed_executions)
     }
 
-    /// [`ExitCode::CHECK_FAILED`] if a plan failed the execution check.
+    /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.failed_executions)
+        checked(self.crashed, self.failed_executions)
     }
 }
 
@@ -80,9 +96,15 @@ impl StudyOutcome {
         )
     }
 
-    /// [`ExitCode::CHECK_FAILED`] if a plan failed the execution check.
+    /// What failed, for standard error: crashed cells and plans that failed the
+    /// execution check.
+    pub fn failures(&self) -> Option<String> {
+        failures(self.crashed, 0)
+    }
+
+    /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.failed_executions)
+        checked(self.crashed, self.failed_executions)
     }
 }
 
@@ -95,6 +117,8 @@ mod tests {
         let mut done = StudyOutcome {
             records: Vec::new(),
             computed: 0,
+            crashed: 0,
+            jobs: 3,
             failed_executions: 0,
             report: "out/report.html".into(),
         };
@@ -111,6 +135,9 @@ mod tests {
             summary: String::new(),
             tables: String::new(),
             records: Vec::new(),
+            computed: 0,
+            crashed: 0,
+            jobs: 1,
             failed_executions: 1,
             report: "r/report.html".into(),
         };
@@ -119,6 +146,42 @@ mod tests {
             reproduction.failures().as_deref(),
             Some("error: 1 plan(s) failed the execution check (see tables.md)\n")
         );
+    }
+
+    #[test]
+    fn a_crashed_cell_fails_the_grid_and_says_so() {
+        let mut done = StudyOutcome {
+            records: Vec::new(),
+            computed: 4,
+            crashed: 0,
+            jobs: 2,
+            failed_executions: 0,
+            report: "out/report.html".into(),
+        };
+        assert_eq!(done.failures(), None);
+        done.crashed = 1;
+        assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
+        assert_eq!(
+            done.failures().as_deref(),
+            Some(
+                "error: 1 cell(s) crashed (their records in results.jsonl say why; run again \
+                 to compute them)\n"
+            )
+        );
+        let reproduction = Reproduction {
+            summary: String::new(),
+            tables: String::new(),
+            records: Vec::new(),
+            computed: 4,
+            crashed: 2,
+            jobs: 2,
+            failed_executions: 1,
+            report: "r/report.html".into(),
+        };
+        assert_eq!(reproduction.exit_code(), ExitCode::CHECK_FAILED);
+        let text = reproduction.failures().unwrap();
+        assert!(text.starts_with("error: 2 cell(s) crashed"), "{text}");
+        assert!(text.ends_with("error: 1 plan(s) failed the execution check (see tables.md)\n"));
     }
 
     #[test]
@@ -138,5 +201,11 @@ mod tests {
             message: String::new(),
         };
         assert_eq!(io.exit_code(), ExitCode::CRITICAL_ERROR);
+        let incomplete = ExperimentError::Incomplete {
+            out: "r".into(),
+            missing: vec!["abc".into()],
+            total: 3,
+        };
+        assert_eq!(incomplete.exit_code(), ExitCode::CHECK_FAILED);
     }
 }

@@ -85,6 +85,8 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         memory: Some(crate::memory::probe()),
         memory_limit,
         children: cell_command(args.jobs as usize, memory_limit)?,
+        force: false,
+        collect_only: false,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::reproduce_cell(&options, id));

@@ -57,6 +57,8 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         memory: Some(crate::memory::probe()),
         memory_limit,
         children: None,
+        force: false,
+        collect_only: false,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::study_cell(&options, id));
@@ -73,5 +75,8 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         "{}",
         done.closing_line(&options.out, jobs, started.elapsed())
     );
+    if let Some(failures) = done.failures() {
+        eprint!("{failures}");
+    }
     Ok(done.exit_code())
 }

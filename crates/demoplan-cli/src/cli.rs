@@ -604,6 +604,8 @@ pub struct ReproduceArgs {
     /// each child process of a parallel reproduction does).
     #[arg(long, value_name = "ID", hide = true)]
     pub cell: Option<String>,
+    #[command(flatten)]
+    pub slurm: SlurmArgs,
 }
 
 /// The options of `study`.
@@ -656,4 +658,44 @@ pub struct StudyArgs {
     /// each child process of a parallel study does).
     #[arg(long, value_name = "ID", hide = true)]
     pub cell: Option<String>,
+    #[command(flatten)]
+    pub slurm: SlurmArgs,
+}
+
+/// The grid as Slurm jobs (`reproduce`, `study`; docs/grids.md).
+#[derive(Debug, Args)]
+pub struct SlurmArgs {
+    /// Write the grid as Slurm array jobs into DIR (scripts and logs; the results go to
+    /// -o DIR) and run nothing: `bash DIR/submit.sh` submits them.
+    #[arg(long, value_name = "DIR")]
+    pub slurm: Option<PathBuf>,
+    /// `sbatch --partition` (default: none, the cluster's default partition).
+    #[arg(long, value_name = "NAME", requires = "slurm")]
+    pub slurm_partition: Option<String>,
+    /// `sbatch --cpus-per-task`.
+    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
+    pub slurm_cpus_per_task: u32,
+    /// `sbatch --mem` (default: the memory limit plus 512M).
+    #[arg(long, value_name = "MEMORY", requires = "slurm")]
+    pub slurm_mem: Option<String>,
+    /// `sbatch --time` of an array task (default: the time limit plus a margin, times
+    /// the cells per task).
+    #[arg(long, value_name = "TIME", requires = "slurm")]
+    pub slurm_time: Option<String>,
+    /// Cells per array task (default: as few as keep the array within 1000 tasks).
+    #[arg(long, value_name = "N", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub slurm_cells_per_task: Option<u32>,
+    /// Array tasks running at once, at most (K of `--array=1-N%K`).
+    #[arg(long, value_name = "K", default_value_t = 100, requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub slurm_max_running: u32,
+    /// Seed of the shuffle that deals the cells to the array tasks.
+    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
+    pub slurm_seed: u64,
+    /// A further `sbatch` option for every job, e.g. `--slurm-sbatch=--account=NAME`.
+    #[arg(long, value_name = "OPTION", requires = "slurm")]
+    pub slurm_sbatch: Vec<String>,
+    /// Compute nothing: build the report from the results in -o DIR (what the Slurm
+    /// collect job runs; cells without a result are an error naming them).
+    #[arg(long, hide = true)]
+    pub collect: bool,
 }

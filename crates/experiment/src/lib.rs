@@ -40,7 +40,6 @@ mod output;
 mod ratio;
 mod record;
 mod reproduce;
-pub mod slurm;
 mod study;
 
 use std::path::PathBuf;
@@ -57,7 +56,7 @@ pub use memory_limit::auto_memory_limit;
 pub use numbers::{numbers, sizes};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
-pub use reproduce::{reproduce, reproduce_cell, ReproduceOptions, Reproduction};
+pub use reproduce::{reproduce, reproduce_cell, reproduce_cells, ReproduceOptions, Reproduction};
 pub use study::{study, study_cell, study_grid, StudyOptions, StudyOutcome};
 
 /// Where a grid is: cells done (reused ones among them) and failed of the total, the

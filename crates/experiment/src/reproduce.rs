@@ -127,7 +127,19 @@ fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), 
 /// process of a reproduction run with [`ReproduceOptions::children`] does.
 pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
     let (mut lab, library) = lab_and_library(options)?;
-    let prios: Vec<usize> = levels(&library, DomainOptions::default())
+    let cells = cells_of(options, &library);
+    run_cell(
+        &mut lab,
+        &cells,
+        id,
+        &RunLayout::new(&options.out),
+        options.force,
+    )
+}
+
+/// The grid's cells on `library`: every level it has, or those of `--prios`.
+fn cells_of(options: &ReproduceOptions, library: &learn::Library) -> Vec<Cell> {
+    let prios: Vec<usize> = levels(library, DomainOptions::default())
         .iter()
         .map(|l| l.prio)
         .filter(|p| {
@@ -137,14 +149,14 @@ pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord,
                 .is_none_or(|chosen| chosen.contains(p))
         })
         .collect();
-    let cells = reproduce_grid(options, &prios);
-    run_cell(
-        &mut lab,
-        &cells,
-        id,
-        &RunLayout::new(&options.out),
-        options.force,
-    )
+    reproduce_grid(options, &prios)
+}
+
+/// The reproduction's cells, as [`reproduce`] runs them (its library learned to know
+/// the levels): what `--slurm` writes as jobs.
+pub fn reproduce_cells(options: &ReproduceOptions) -> Result<Vec<Cell>, ExperimentError> {
+    let (_, library) = lab_and_library(options)?;
+    Ok(cells_of(options, &library))
 }
 
 /// The paper's goal of a record (its tower's height less one).

@@ -4,7 +4,9 @@
 
 use slim::FastDownward;
 
-use crate::cli::{FastDownwardArgs, ReproduceArgs};
+use std::path::Path;
+
+use crate::cli::{FastDownwardArgs, ReproduceArgs, SlurmArgs};
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::progress::Bar;
@@ -61,6 +63,54 @@ pub fn cell_command(
     }))
 }
 
+/// The memory limit per cell: `--memory-limit`, where `auto` on a grid written for
+/// Slurm is [`experiment::grid::slurm::AUTO_MEMORY_LIMIT`].
+pub fn grid_memory_limit(text: &str, jobs: usize, slurm: &SlurmArgs) -> Result<Option<u64>, Failure> {
+    match slurm.slurm {
+        Some(_) if !slurm.collect && text.trim().eq_ignore_ascii_case("auto") => {
+            Ok(Some(experiment::grid::slurm::AUTO_MEMORY_LIMIT))
+        }
+        _ => parse_run_memory_limit(text, jobs),
+    }
+}
+
+/// `--slurm DIR`: writes the grid `cells` as Slurm jobs into DIR and runs nothing.
+pub fn write_slurm(
+    args: &SlurmArgs,
+    dir: &Path,
+    name: &str,
+    cells: Result<Vec<experiment::Cell>, experiment::ExperimentError>,
+    memory_limit: Option<u64>,
+) -> Result<ExitCode, Failure> {
+    use task::units::{parse_memory_limit, parse_time_limit};
+    let usage = |option: &str, e: String| Failure::plain(ExitCode::USAGE, format!("{option}: {e}"));
+    let mem = args.slurm_mem.as_deref().map(parse_memory_limit).transpose();
+    let time = args.slurm_time.as_deref().map(parse_time_limit).transpose();
+    let here = |e: std::io::Error| usage("--slurm", format!("cannot locate this program: {e}"));
+    let command = experiment::grid::slurm::GridCommand {
+        program: std::env::current_exe().map_err(here)?,
+        args: std::env::args_os().skip(1).collect(),
+        workdir: std::env::current_dir().map_err(here)?,
+        name: name.into(),
+        memory_limit,
+    };
+    let options = experiment::grid::slurm::SlurmOptions {
+        partition: args.slurm_partition.clone(),
+        cpus_per_task: args.slurm_cpus_per_task,
+        mem: mem.map_err(|e| usage("--slurm-mem", e))?.flatten(),
+        time: time.map_err(|e| usage("--slurm-time", e))?.flatten(),
+        cells_per_task: args.slurm_cells_per_task.map(|n| n as usize),
+        max_running: args.slurm_max_running as usize,
+        seed: args.slurm_seed,
+        sbatch: args.slurm_sbatch.clone(),
+        ..experiment::grid::slurm::SlurmOptions::new(dir)
+    };
+    let cells = cells.map_err(experiment_failure)?;
+    let job = experiment::grid::slurm::write_job(&cells, &command, &options);
+    print!("{}", job.map_err(experiment_failure)?.summary());
+    Ok(ExitCode::SUCCESS)
+}
+
 /// A child process's cell record on standard output, as [`experiment::CellCommand`]
 /// reads it.
 pub fn print_cell(
@@ -72,7 +122,7 @@ pub fn print_cell(
 
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, args.jobs as usize)?;
+    let memory_limit = grid_memory_limit(&args.limits.memory_limit, args.jobs as usize, &args.slurm)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
         time_limit: time_limit(args.limits.time_limit.as_deref())?,
@@ -86,10 +136,14 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         memory_limit,
         children: cell_command(args.jobs as usize, memory_limit)?,
         force: false,
-        collect_only: false,
+        collect_only: args.slurm.collect,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::reproduce_cell(&options, id));
+    }
+    if let (Some(dir), false) = (&args.slurm.slurm, args.slurm.collect) {
+        let cells = experiment::reproduce_cells(&options);
+        return write_slurm(&args.slurm, dir, "reproduce", cells, memory_limit);
     }
     let bar = Bar::new();
     let result = experiment::reproduce(&options, &mut |p| bar.update(p));

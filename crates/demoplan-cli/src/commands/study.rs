@@ -3,9 +3,9 @@
 //! to an exit code.
 
 use crate::cli::StudyArgs;
-use crate::commands::plan::parse_run_memory_limit;
 use crate::commands::reproduce::{
-    cell_command, experiment_failure, fast_downward, print_cell, time_limit,
+    cell_command, experiment_failure, fast_downward, grid_memory_limit, print_cell, time_limit,
+    write_slurm,
 };
 use crate::diagnostic::Failure;
 use crate::input;
@@ -39,7 +39,7 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         Some(n) => n as usize,
         None => std::thread::available_parallelism().map_or(1, usize::from),
     };
-    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, jobs)?;
+    let memory_limit = grid_memory_limit(&args.limits.memory_limit, jobs, &args.slurm)?;
     let options = experiment::StudyOptions {
         out: args.out,
         seeds: numbers("--seeds", &args.seeds)?,
@@ -58,10 +58,14 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         memory_limit,
         children: None,
         force: false,
-        collect_only: false,
+        collect_only: args.slurm.collect,
     };
     if let Some(id) = &args.cell {
         return print_cell(experiment::study_cell(&options, id));
+    }
+    if let (Some(dir), false) = (&args.slurm.slurm, args.slurm.collect) {
+        let cells = Ok(experiment::study_grid(&options));
+        return write_slurm(&args.slurm, dir, "study", cells, memory_limit);
     }
     let options = experiment::StudyOptions {
         children: cell_command(jobs, memory_limit)?,

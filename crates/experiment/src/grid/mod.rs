@@ -13,6 +13,7 @@
 
 mod children;
 pub mod properties;
+pub mod slurm;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;

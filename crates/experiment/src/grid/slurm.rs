@@ -37,6 +37,10 @@ pub const MEMORY_MARGIN: u64 = 512 << 20;
 /// is more.
 pub const TIME_MARGIN: Duration = Duration::from_secs(60);
 
+/// Each cell's memory limit on Slurm when the grid's is `auto`: the memory available
+/// where the job is written says nothing about the nodes.
+pub const AUTO_MEMORY_LIMIT: u64 = 3 << 30;
+
 /// A time limit at least this long is no limit: the job gets no `--time` line and
 /// runs under the partition's default.
 const NO_TIME_LIMIT: Duration = Duration::from_secs(365 * 24 * 3600);

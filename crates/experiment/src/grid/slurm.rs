@@ -413,9 +413,9 @@ fn submit_script(
          set -euo pipefail\n\
          dir={dir_q}\n\
          workdir={workdir}\n\
-         wait=()\n\
+         wait=no\n\
          case \"${{1:-}}\" in\n\
-         --wait) wait=(--wait) ;;\n\
+         --wait) wait=yes ;;\n\
          '') ;;\n\
          *) echo \"usage: $0 [--wait]\" >&2; exit 2 ;;\n\
          esac\n\
@@ -443,16 +443,29 @@ fn submit_script(
     }
     let log = output_pattern(&dir.join("logs"), "collect-%j.out")?;
     s.push_str(&format!(
-        "if [ ${{#wait[@]}} -gt 0 ]; then\n\
-         \x20   echo \"submitting the collect job, after$after, and waiting for it\"\n\
-         \x20   exec sbatch --wait --dependency=afterany$after --chdir=\"$workdir\" \\\n\
-         \x20       --output={log} \"$dir/collect.sh\"\n\
-         fi\n\
-         id=$(sbatch --parsable --dependency=afterany$after --chdir=\"$workdir\" \\\n\
+        "id=$(sbatch --parsable --dependency=afterany$after --chdir=\"$workdir\" \\\n\
          \x20   --output={log} \"$dir/collect.sh\")\n\
          id=${{id%%;*}}\n\
          echo \"collect $id\" >>\"$dir/jobs\"\n\
-         echo \"submitted collect: job $id; logs in $dir/logs\"\n"
+         echo \"submitted collect: job $id; logs in $dir/logs\"\n\
+         [ \"$wait\" = yes ] || exit 0\n\
+         # Polled each second (sbatch --wait backs off to half a minute): the job's state\n\
+         # is known to scontrol until MinJobAge (300 s by default) after it ends.\n\
+         while :; do\n\
+         \x20   state=$(scontrol show job -o \"$id\")\n\
+         \x20   case \"$state\" in\n\
+         \x20   *JobState=PENDING* | *JobState=RUNNING* | *JobState=CONFIGURING* | *JobState=COMPLETING* | *JobState=SUSPENDED*) sleep 1 ;;\n\
+         \x20   *) break ;;\n\
+         \x20   esac\n\
+         done\n\
+         case \"$state\" in\n\
+         *JobState=COMPLETED*) exit 0 ;;\n\
+         *JobState=FAILED*' 'ExitCode=*)\n\
+         \x20   code=${{state##*' 'ExitCode=}}\n\
+         \x20   echo \"the collect job $id failed (exit code ${{code%%:*}}): see $dir/logs/collect-$id.out\" >&2\n\
+         \x20   exit \"${{code%%:*}}\" ;;\n\
+         *) echo \"the collect job $id ended: $state\" >&2; exit 1 ;;\n\
+         esac\n"
     ));
     Ok(s)
 }

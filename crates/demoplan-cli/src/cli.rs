@@ -676,12 +676,12 @@ pub struct SlurmArgs {
     #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
     pub slurm_cpus_per_task: u32,
     /// `sbatch --mem` (default: the memory limit plus 512M).
-    #[arg(long, value_name = "MEMORY", requires = "slurm")]
-    pub slurm_mem: Option<String>,
+    #[arg(long, value_name = "MEMORY", requires = "slurm", value_parser = experiment::grid::slurm::parse_mem)]
+    pub slurm_mem: Option<u64>,
     /// `sbatch --time` of an array task (default: the time limit plus a margin, times
     /// the cells per task).
-    #[arg(long, value_name = "TIME", requires = "slurm")]
-    pub slurm_time: Option<String>,
+    #[arg(long, value_name = "TIME", requires = "slurm", value_parser = experiment::grid::slurm::parse_time)]
+    pub slurm_time: Option<std::time::Duration>,
     /// Cells per array task (default: as few as keep the array within 1000 tasks).
     #[arg(long, value_name = "N", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
     pub slurm_cells_per_task: Option<u32>,

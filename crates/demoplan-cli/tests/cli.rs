@@ -1886,6 +1886,76 @@ fn study_refuses_bad_options_before_writing_anything() {
     }
 }
 
+#[test]
+fn slurm_writes_the_grid_as_jobs_and_runs_nothing() {
+    let tmp = tempdir("study-slurm");
+    let grid = [
+        "study",
+        "--seeds",
+        "1",
+        "--hands",
+        "1",
+        "--heights",
+        "2",
+        "-o",
+        "out",
+    ];
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(grid)
+        .args(["--slurm", "jobs", "--slurm-partition", "short"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", transcript(&out));
+    assert!(
+        stdout_text(&out).contains("jobs/submit.sh"),
+        "{}",
+        transcript(&out)
+    );
+    let cells = std::fs::read_to_string(tmp.join("jobs/cells.sh")).unwrap();
+    assert!(cells.contains("#SBATCH --partition=short\n"), "{cells}");
+    // `auto` on Slurm: 3G per cell, plus the margin.
+    assert!(cells.contains("#SBATCH --mem=3584M\n"), "{cells}");
+    assert!(
+        cells.contains("--memory-limit 3221225472 --cell"),
+        "{cells}"
+    );
+    assert!(tmp.join("jobs/submit.sh").exists() && tmp.join("jobs/collect.sh").exists());
+    assert!(!tmp.join("out").exists(), "--slurm ran the grid");
+    // Bad options are refused before anything is written.
+    for (args, what) in [
+        (vec!["--heights", "1-3", "--slurm", "bad"], "--heights"),
+        (vec!["--slurm", "bad", "--slurm-mem", "lots"], "--slurm-mem"),
+        (
+            vec!["--slurm", "bad", "--slurm-max-running", "0"],
+            "--slurm-max-running",
+        ),
+        (vec!["--slurm-partition", "short"], "--slurm"),
+    ] {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .args(["study", "-o", "out"])
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(36),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(
+            stderr_text(&out).contains(what),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(
+            !tmp.join("bad").exists() && !tmp.join("out").exists(),
+            "{args:?}"
+        );
+    }
+}
+
 /// The slim crate's widening library, and a problem (a tower of two) written into `tmp`.
 fn widening_library_and_problem(tmp: &Path) -> (PathBuf, PathBuf) {
     let library = workspace().join("crates/slim/tests/fixtures/widening-library.json");

@@ -133,6 +133,12 @@ impl StudyOptions {
     }
 }
 
+/// The study's cells, its options checked first: what `--slurm` writes as jobs.
+pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError> {
+    options.check()?;
+    Ok(study_grid(options))
+}
+
 /// Every cell of a study, seed by seed (so that each seed's library is learned once
 /// and its cells finish together).
 pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {

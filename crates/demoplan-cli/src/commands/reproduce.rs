@@ -65,7 +65,11 @@ pub fn cell_command(
 
 /// The memory limit per cell: `--memory-limit`, where `auto` on a grid written for
 /// Slurm is [`experiment::grid::slurm::AUTO_MEMORY_LIMIT`].
-pub fn grid_memory_limit(text: &str, jobs: usize, slurm: &SlurmArgs) -> Result<Option<u64>, Failure> {
+pub fn grid_memory_limit(
+    text: &str,
+    jobs: usize,
+    slurm: &SlurmArgs,
+) -> Result<Option<u64>, Failure> {
     match slurm.slurm {
         Some(_) if !slurm.collect && text.trim().eq_ignore_ascii_case("auto") => {
             Ok(Some(experiment::grid::slurm::AUTO_MEMORY_LIMIT))
@@ -82,31 +86,27 @@ pub fn write_slurm(
     cells: Result<Vec<experiment::Cell>, experiment::ExperimentError>,
     memory_limit: Option<u64>,
 ) -> Result<ExitCode, Failure> {
-    use task::units::{parse_memory_limit, parse_time_limit};
-    let usage = |option: &str, e: String| Failure::plain(ExitCode::USAGE, format!("{option}: {e}"));
-    let mem = args.slurm_mem.as_deref().map(parse_memory_limit).transpose();
-    let time = args.slurm_time.as_deref().map(parse_time_limit).transpose();
-    let here = |e: std::io::Error| usage("--slurm", format!("cannot locate this program: {e}"));
-    let command = experiment::grid::slurm::GridCommand {
+    use experiment::grid::slurm::{write_job, GridCommand, SlurmOptions};
+    let here = |e: std::io::Error| Failure::plain(ExitCode::USAGE, format!("--slurm: {e}"));
+    let command = GridCommand {
         program: std::env::current_exe().map_err(here)?,
         args: std::env::args_os().skip(1).collect(),
         workdir: std::env::current_dir().map_err(here)?,
         name: name.into(),
         memory_limit,
     };
-    let options = experiment::grid::slurm::SlurmOptions {
+    let options = SlurmOptions {
         partition: args.slurm_partition.clone(),
         cpus_per_task: args.slurm_cpus_per_task,
-        mem: mem.map_err(|e| usage("--slurm-mem", e))?.flatten(),
-        time: time.map_err(|e| usage("--slurm-time", e))?.flatten(),
+        mem: args.slurm_mem,
+        time: args.slurm_time,
         cells_per_task: args.slurm_cells_per_task.map(|n| n as usize),
         max_running: args.slurm_max_running as usize,
         seed: args.slurm_seed,
         sbatch: args.slurm_sbatch.clone(),
-        ..experiment::grid::slurm::SlurmOptions::new(dir)
+        ..SlurmOptions::new(dir)
     };
-    let cells = cells.map_err(experiment_failure)?;
-    let job = experiment::grid::slurm::write_job(&cells, &command, &options);
+    let job = cells.and_then(|cells| write_job(&cells, &command, &options));
     print!("{}", job.map_err(experiment_failure)?.summary());
     Ok(ExitCode::SUCCESS)
 }
@@ -122,7 +122,8 @@ pub fn print_cell(
 
 pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let memory_limit = grid_memory_limit(&args.limits.memory_limit, args.jobs as usize, &args.slurm)?;
+    let memory_limit =
+        grid_memory_limit(&args.limits.memory_limit, args.jobs as usize, &args.slurm)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
         time_limit: time_limit(args.limits.time_limit.as_deref())?,

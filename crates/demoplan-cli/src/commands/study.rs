@@ -64,7 +64,7 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         return print_cell(experiment::study_cell(&options, id));
     }
     if let (Some(dir), false) = (&args.slurm.slurm, args.slurm.collect) {
-        let cells = Ok(experiment::study_grid(&options));
+        let cells = experiment::study_cells(&options);
         return write_slurm(&args.slurm, dir, "study", cells, memory_limit);
     }
     let options = experiment::StudyOptions {

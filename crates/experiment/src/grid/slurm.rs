@@ -188,6 +188,19 @@ fn task_time(options: &SlurmOptions, limit: Duration, per_task: usize) -> Option
     Some(per_cell * per_task as u32)
 }
 
+/// `--slurm-mem`: a size in Fast Downward's units (`512M`, `3G`; bytes without one).
+pub fn parse_mem(text: &str) -> Result<u64, String> {
+    task::units::parse_memory_limit(text)?
+        .ok_or_else(|| "a job asks for a size: infinity is none".to_string())
+}
+
+/// `--slurm-time`: a duration in Fast Downward's units (`90m`, `2h`; seconds without
+/// one).
+pub fn parse_time(text: &str) -> Result<Duration, String> {
+    task::units::parse_time_limit(text)?
+        .ok_or_else(|| "a job asks for a duration: infinity is none".to_string())
+}
+
 /// Slurm's `--time` value, `D-HH:MM:SS` (`HH:MM:SS` under a day), rounded up to whole
 /// minutes (Slurm's unit).
 pub fn slurm_time(t: Duration) -> String {
@@ -558,6 +571,16 @@ mod tests {
         let mut all = ids(refs);
         all.sort();
         assert_eq!(sorted, all);
+    }
+
+    #[test]
+    fn option_values_in_fast_downwards_units() {
+        assert_eq!(parse_mem("3G"), Ok(3 << 30));
+        assert_eq!(parse_mem("512M"), Ok(512 << 20));
+        assert!(parse_mem("infinity").unwrap_err().contains("infinity"));
+        assert!(parse_mem("lots").is_err());
+        assert_eq!(parse_time("90m"), Ok(Duration::from_secs(5400)));
+        assert!(parse_time("infinity").is_err());
     }
 
     #[test]

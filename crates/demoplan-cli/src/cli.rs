@@ -560,6 +560,24 @@ pub struct FastDownwardArgs {
     pub fd: Option<PathBuf>,
 }
 
+/// A grid's options (`reproduce`, `study`; docs/grids.md).
+#[derive(Debug, Args)]
+pub struct GridArgs {
+    /// Cells at once, each a child process of its own (default: the number of cores).
+    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
+    pub jobs: Option<u32>,
+    /// Compute only the cell with this id into its run folder under -o DIR, and print
+    /// its record as one JSON line (what each child process does).
+    #[arg(long, value_name = "ID")]
+    pub cell: Option<String>,
+    /// Compute every cell again, even those with a result in -o DIR.
+    #[arg(long)]
+    pub force: bool,
+    /// Print the cells (task, id, Lab's names, conditions) and run nothing.
+    #[arg(long)]
+    pub list_cells: bool,
+}
+
 /// The options of `reproduce`.
 #[derive(Debug, Args)]
 #[command(mut_arg("time_limit", |a| a.default_value("60")))]
@@ -596,14 +614,8 @@ pub struct ReproduceArgs {
     /// Hands in the problems' scene: 1 (a one-armed robot, as the paper's TIAGo) or 2.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=2))]
     pub hands: u64,
-    /// Runs at once, each in a child process of its own. The default, 1, runs them one
-    /// after another in this process: the tables' times are then each a run alone.
-    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
-    pub jobs: u32,
-    /// Compute only the cell with this id and print its record as one JSON line (what
-    /// each child process of a parallel reproduction does).
-    #[arg(long, value_name = "ID", hide = true)]
-    pub cell: Option<String>,
+    #[command(flatten)]
+    pub grid: GridArgs,
 }
 
 /// The options of `study`.
@@ -648,12 +660,6 @@ pub struct StudyArgs {
     /// The output folder (created if missing; a folder with results resumes).
     #[arg(short = 'o', long = "out", value_name = "DIR", default_value = "study")]
     pub out: PathBuf,
-    /// Runs at once, each in a child process of its own (default: the number of
-    /// cores). `-j 1` runs them one after another in this process.
-    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
-    pub jobs: Option<u32>,
-    /// Compute only the cell with this id and print its record as one JSON line (what
-    /// each child process of a parallel study does).
-    #[arg(long, value_name = "ID", hide = true)]
-    pub cell: Option<String>,
+    #[command(flatten)]
+    pub grid: GridArgs,
 }

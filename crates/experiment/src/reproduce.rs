@@ -123,10 +123,9 @@ fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), 
     Ok((lab, library))
 }
 
-/// Computes one cell of the reproduction, by id, in this process: what each child
-/// process of a reproduction run with [`ReproduceOptions::children`] does.
-pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
-    let (mut lab, library) = lab_and_library(options)?;
+/// The lab and the grid's cells (the levels come from the library it learns).
+fn lab_and_cells(options: &ReproduceOptions) -> Result<(Lab, Vec<Cell>), ExperimentError> {
+    let (lab, library) = lab_and_library(options)?;
     let prios: Vec<usize> = levels(&library, DomainOptions::default())
         .iter()
         .map(|l| l.prio)
@@ -137,7 +136,18 @@ pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord,
                 .is_none_or(|chosen| chosen.contains(p))
         })
         .collect();
-    let cells = reproduce_grid(options, &prios);
+    Ok((lab, reproduce_grid(options, &prios)))
+}
+
+/// The reproduction's cells, in their order (`--list-cells`; [`crate::grid::cell_list`]).
+pub fn reproduce_cells(options: &ReproduceOptions) -> Result<Vec<Cell>, ExperimentError> {
+    Ok(lab_and_cells(options)?.1)
+}
+
+/// Computes one cell of the reproduction, by id, in this process: what each child
+/// process of a reproduction run with [`ReproduceOptions::children`] does.
+pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    let (mut lab, cells) = lab_and_cells(options)?;
     run_cell(
         &mut lab,
         &cells,

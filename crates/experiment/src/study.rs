@@ -262,6 +262,12 @@ pub fn study(
     })
 }
 
+/// The study's cells, in their order, once its options are checked (`--list-cells`).
+pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError> {
+    options.check()?;
+    Ok(study_grid(options))
+}
+
 /// Computes one cell of the study, by id, in this process, into its run folder: what
 /// each child process of a study run with [`StudyOptions::children`] (or a Slurm array
 /// task) does. Algorithm 1 cells reuse the runs already in the study's folder.

@@ -45,13 +45,12 @@ pub use recording_input::open as open_recording;
 #[global_allocator]
 static ALLOCATOR: memory::CountingAllocator = memory::CountingAllocator;
 
-/// A command line as given, and the command that runs demoplan again: a grid runs each
-/// cell as `program... argv... --cell ID` (docs/grids.md).
+/// A command line as given (`argv`, after the program's name) and `program`, the command
+/// that runs demoplan again (`[python, -m, demoplan]` in Python): a grid runs each cell as
+/// `program... argv... --cell ID` (docs/grids.md).
 #[derive(Debug, Clone)]
 pub struct Invocation {
-    /// The program and its leading arguments (`[python, -m, demoplan]` in Python).
     pub program: Vec<OsString>,
-    /// The arguments after the program's name.
     pub argv: Vec<OsString>,
 }
 
@@ -64,17 +63,12 @@ where
     T: Into<OsString> + Clone,
 {
     let program = std::env::current_exe().map_or_else(|_| "demoplan".into(), OsString::from);
-    run_as(vec![program], argv)
+    run_as(vec![program], argv.into_iter().map(Into::into).collect())
 }
 
 /// [`run`], with `program` as the command that runs demoplan again.
-pub fn run_as<I, T>(program: Vec<OsString>, argv: I) -> ExitCode
-where
-    I: IntoIterator<Item = T>,
-    T: Into<OsString> + Clone,
-{
+pub fn run_as(program: Vec<OsString>, argv: Vec<OsString>) -> ExitCode {
     stop_cleanly_when_stdout_fails();
-    let argv: Vec<OsString> = argv.into_iter().map(Into::into).collect();
     let this = Invocation {
         program,
         argv: argv.iter().skip(1).cloned().collect(),

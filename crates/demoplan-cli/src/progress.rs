@@ -26,11 +26,9 @@ impl Bar {
                 ProgressDrawTarget::hidden()
             },
         );
-        let style = ProgressStyle::with_template(
-            "[{bar:30}] {pos}/{len} {elapsed_precise} {msg}",
-        )
-        .map(|s| s.progress_chars("#> "))
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
+        let style = ProgressStyle::with_template("[{bar:30}] {pos}/{len} {elapsed_precise} {msg}")
+            .map(|s| s.progress_chars("#> "))
+            .unwrap_or_else(|_| ProgressStyle::default_bar());
         bar.set_style(style);
         Bar { bar }
     }
@@ -39,7 +37,9 @@ impl Bar {
     pub fn update(&self, p: experiment::Progress<'_>) {
         self.bar.set_length(p.total as u64);
         self.bar.set_position(p.done as u64);
-        let left = p.time_left().map_or("?".into(), |t| format!("{:.0} s", t.as_secs_f64()));
+        let left = p
+            .time_left()
+            .map_or("?".into(), |t| format!("{:.0} s", t.as_secs_f64()));
         self.bar.set_message(format!(
             "{} failed, {} to go (about {left} left) {}",
             p.failed,

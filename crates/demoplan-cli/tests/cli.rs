@@ -1824,7 +1824,16 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
     let tmp = tempdir("grid-list");
     let out = tmp.join("out");
     let out_arg = out.to_str().unwrap();
-    let args = ["-o", out_arg, "--seeds", "3", "--hands", "1", "--heights", "2"];
+    let args = [
+        "-o",
+        out_arg,
+        "--seeds",
+        "3",
+        "--hands",
+        "1",
+        "--heights",
+        "2",
+    ];
     let ids = listed_cells(&args);
     // 1 seed x 1 hand x 1 height x 2 planners x 3 levels, each once.
     assert_eq!(ids.len(), 6);
@@ -1834,7 +1843,13 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
     );
     assert!(!out.exists(), "--list-cells wrote {}", out.display());
     let computed = |extra: &[&str]| {
-        let done = succeeds(demoplan().arg("study").args(args).args(["-j", "2"]).args(extra));
+        let done = succeeds(
+            demoplan()
+                .arg("study")
+                .args(args)
+                .args(["-j", "2"])
+                .args(extra),
+        );
         let stdout = stdout_text(&done);
         assert!(stdout.contains("2 at a time"), "{stdout}");
         stdout
@@ -1850,7 +1865,10 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
     exits_saying(
         36,
         "no cell of this grid has that id",
-        demoplan().arg("study").args(args).args(["--cell", "0123456789abcdef"]),
+        demoplan()
+            .arg("study")
+            .args(args)
+            .args(["--cell", "0123456789abcdef"]),
     );
 }
 
@@ -1865,7 +1883,16 @@ fn an_interrupted_study_resumes_with_every_cell_whole() {
     let out = tmp.join("out");
     let out_arg = out.to_str().unwrap();
     let args = [
-        "-o", out_arg, "--seeds", "1-2", "--hands", "1", "--heights", "2-3", "--time-limit", "20",
+        "-o",
+        out_arg,
+        "--seeds",
+        "1-2",
+        "--hands",
+        "1",
+        "--heights",
+        "2-3",
+        "--time-limit",
+        "20",
     ];
     let ids = listed_cells(&args);
     assert_eq!(ids.len(), 24);
@@ -1881,11 +1908,17 @@ fn an_interrupted_study_resumes_with_every_cell_whole() {
     let group = format!("-{}", grid.id());
     // Wait for a cell to have started (its marker), not for a time.
     let started = || {
-        (1..=ids.len()).any(|t| out.join(format!("runs-00001-00100/{t:05}/started")).exists())
+        (1..=ids.len()).any(|t| {
+            out.join(format!("runs-00001-00100/{t:05}/started"))
+                .exists()
+        })
     };
     let waited = std::time::Instant::now();
     while !started() {
-        assert!(grid.try_wait().unwrap().is_none(), "the grid ended before a cell started");
+        assert!(
+            grid.try_wait().unwrap().is_none(),
+            "the grid ended before a cell started"
+        );
         assert!(waited.elapsed().as_secs() < 300, "no cell started in 300 s");
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
@@ -1912,7 +1945,10 @@ fn an_interrupted_study_resumes_with_every_cell_whole() {
             })
         })
         .count();
-    assert!(whole < ids.len(), "every cell was done before the interruption");
+    assert!(
+        whole < ids.len(),
+        "every cell was done before the interruption"
+    );
 
     let again = succeeds(demoplan().arg("study").args(args).args(["-j", "2"]));
     let stdout = stdout_text(&again);

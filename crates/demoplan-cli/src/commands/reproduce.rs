@@ -5,10 +5,10 @@
 use slim::FastDownward;
 
 use crate::cli::{FastDownwardArgs, GridArgs, ReproduceArgs};
-use crate::Invocation;
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::progress::Bar;
+use crate::Invocation;
 use slim::ExitCode;
 
 /// An experiment's error as a failure with its exit code
@@ -47,7 +47,11 @@ pub fn jobs(grid: &GridArgs) -> usize {
 /// demoplan again) with the grid's command line `argv`, `--cell ID` and the memory limit
 /// this process resolved (the last `--memory-limit` wins: `auto` again in a child would
 /// count its siblings).
-pub fn cell_command(jobs: usize, memory_limit: Option<u64>, this: &Invocation) -> experiment::CellCommand {
+pub fn cell_command(
+    jobs: usize,
+    memory_limit: Option<u64>,
+    this: &Invocation,
+) -> experiment::CellCommand {
     let bytes = memory_limit.map_or("infinity".to_string(), |b| b.to_string());
     experiment::CellCommand {
         program: this.program[0].clone().into(),
@@ -96,7 +100,9 @@ pub fn run(args: ReproduceArgs, this: &Invocation) -> Result<ExitCode, Failure> 
         collect_only: false,
     };
     let cells = || experiment::reproduce_cells(&options);
-    if let Some(done) = cell_or_list(&args.grid, cells, |id| experiment::reproduce_cell(&options, id)) {
+    if let Some(done) = cell_or_list(&args.grid, cells, |id| {
+        experiment::reproduce_cell(&options, id)
+    }) {
         return done;
     }
     let bar = Bar::new();

@@ -9,8 +9,8 @@ use crate::commands::reproduce::{
 };
 use crate::diagnostic::Failure;
 use crate::input;
-use crate::Invocation;
 use crate::progress::Bar;
+use crate::Invocation;
 use slim::ExitCode;
 
 fn usage(option: &str, message: String) -> Failure {
@@ -66,10 +66,7 @@ pub fn run(args: StudyArgs, this: &Invocation) -> Result<ExitCode, Failure> {
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();
     let done = result.map_err(experiment_failure)?;
-    print!(
-        "{}",
-        done.closing_line(&options.out, started.elapsed())
-    );
+    print!("{}", done.closing_line(&options.out, started.elapsed()));
     if let Some(failures) = done.failures() {
         eprint!("{failures}");
     }

@@ -98,10 +98,11 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 }
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
-/// computing something that belongs in a library crate. The budget is 3,176 today (3,070,
-/// plus 101 for issue 24's `--slurm`: its options, `SlurmArgs`, and the glue that hands
-/// them to `experiment::grid::slurm`; the grid's merge of main stood at 3,074); issue 21
-/// aimed at 2,500. What is left: the option declarations and their help texts
+/// computing something that belongs in a library crate. The budget is 3,215 today (3,070
+/// before issue 24's grids added 46: their options, `GridArgs`, declared once, the
+/// `Invocation` a grid's cells run again, `--list-cells`/`--cell` glue; and 99 for
+/// `--slurm`: `SlurmArgs`, its help texts, and the glue that hands them to
+/// `experiment::grid::slurm`); issue 21 aimed at 2,500. What is left: the option declarations and their help texts
 /// (`cli.rs`, about 650 lines), diagnostics (`diagnostic.rs`, `recording_input.rs`,
 /// `demo_input.rs`: library errors rendered with miette, which no library crate may use),
 /// file handling, process plumbing (`memory.rs`, the counting allocator the Python
@@ -125,5 +126,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 3_176, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 3_215, "crates/demoplan-cli/src has {total} lines");
 }

@@ -80,15 +80,16 @@ impl Reproduction {
 }
 
 impl StudyOutcome {
-    /// The last line: runs computed now and found in earlier results, `jobs` at a time
-    /// in `elapsed`, failed execution checks, and where the results are.
-    pub fn closing_line(&self, out: &Path, jobs: usize, elapsed: Duration) -> String {
+    /// The last line: runs computed now and found in earlier results, how many at a
+    /// time, in `elapsed`, failed execution checks, and where the results are.
+    pub fn closing_line(&self, out: &Path, elapsed: Duration) -> String {
         format!(
-            "Study: {} runs ({} computed now, {} from earlier results, {jobs} at a time) in \
+            "Study: {} runs ({} computed now, {} from earlier results, {} at a time) in \
              {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}\n",
             self.records.len(),
             self.computed,
             self.records.len().saturating_sub(self.computed),
+            self.jobs,
             elapsed.as_secs_f64(),
             self.failed_executions,
             out.display(),
@@ -125,7 +126,7 @@ mod tests {
         assert_eq!(done.exit_code(), ExitCode::SUCCESS);
         done.failed_executions = 2;
         assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
-        let line = done.closing_line(Path::new("out"), 3, Duration::from_secs(7));
+        let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
         assert_eq!(
             line,
             "Study: 0 runs (0 computed now, 0 from earlier results, 3 at a time) in 7 s; 2 \

@@ -50,7 +50,7 @@ pub use report::paper;
 
 pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAMS};
 pub use findings::findings;
-pub use grid::{CellCommand, GridRun, RunLayout, Runner};
+pub use grid::{cell_list, CellCommand, GridRun, RunLayout, Runner};
 pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
 pub use memory_limit::auto_memory_limit;
 pub use numbers::{numbers, sizes};
@@ -72,6 +72,23 @@ pub struct Progress<'a> {
     /// What runs now, for people: e.g. `lmcut full height 5 seed 3`.
     pub current: &'a str,
     pub elapsed: Duration,
+}
+
+impl Progress<'_> {
+    /// Cells not done yet.
+    pub fn remaining(&self) -> usize {
+        self.total.saturating_sub(self.done)
+    }
+
+    /// The time left, from the rate of the cells computed so far (reused ones took no
+    /// time; cells at once are in the rate): `None` before the first is done.
+    pub fn time_left(&self) -> Option<Duration> {
+        let computed = self.done.saturating_sub(self.reused);
+        (computed > 0).then(|| {
+            self.elapsed
+                .mul_f64(self.remaining() as f64 / computed as f64)
+        })
+    }
 }
 
 /// What can go wrong in an experiment. "No plan" and "out of time" are outcomes in the

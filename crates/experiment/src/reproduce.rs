@@ -123,23 +123,10 @@ fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), 
     Ok((lab, library))
 }
 
-/// Computes one cell of the reproduction, by id, in this process: what each child
-/// process of a reproduction run with [`ReproduceOptions::children`] does.
-pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
-    let (mut lab, library) = lab_and_library(options)?;
-    let cells = cells_of(options, &library);
-    run_cell(
-        &mut lab,
-        &cells,
-        id,
-        &RunLayout::new(&options.out),
-        options.force,
-    )
-}
-
-/// The grid's cells on `library`: every level it has, or those of `--prios`.
-fn cells_of(options: &ReproduceOptions, library: &learn::Library) -> Vec<Cell> {
-    let prios: Vec<usize> = levels(library, DomainOptions::default())
+/// The lab and the grid's cells (the levels come from the library it learns).
+fn lab_and_cells(options: &ReproduceOptions) -> Result<(Lab, Vec<Cell>), ExperimentError> {
+    let (lab, library) = lab_and_library(options)?;
+    let prios: Vec<usize> = levels(&library, DomainOptions::default())
         .iter()
         .map(|l| l.prio)
         .filter(|p| {
@@ -149,14 +136,25 @@ fn cells_of(options: &ReproduceOptions, library: &learn::Library) -> Vec<Cell> {
                 .is_none_or(|chosen| chosen.contains(p))
         })
         .collect();
-    reproduce_grid(options, &prios)
+    Ok((lab, reproduce_grid(options, &prios)))
 }
 
-/// The reproduction's cells, as [`reproduce`] runs them (its library learned to know
-/// the levels): what `--slurm` writes as jobs.
+/// The reproduction's cells, in their order (`--list-cells`; [`crate::grid::cell_list`]).
 pub fn reproduce_cells(options: &ReproduceOptions) -> Result<Vec<Cell>, ExperimentError> {
-    let (_, library) = lab_and_library(options)?;
-    Ok(cells_of(options, &library))
+    Ok(lab_and_cells(options)?.1)
+}
+
+/// Computes one cell of the reproduction, by id, in this process: what each child
+/// process of a reproduction run with [`ReproduceOptions::children`] does.
+pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    let (mut lab, cells) = lab_and_cells(options)?;
+    run_cell(
+        &mut lab,
+        &cells,
+        id,
+        &RunLayout::new(&options.out),
+        options.force,
+    )
 }
 
 /// The paper's goal of a record (its tower's height less one).

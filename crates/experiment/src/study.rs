@@ -133,12 +133,6 @@ impl StudyOptions {
     }
 }
 
-/// The study's cells, its options checked first: what `--slurm` writes as jobs.
-pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError> {
-    options.check()?;
-    Ok(study_grid(options))
-}
-
 /// Every cell of a study, seed by seed (so that each seed's library is learned once
 /// and its cells finish together).
 pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {
@@ -266,6 +260,12 @@ pub fn study(
         failed_executions,
         report: page,
     })
+}
+
+/// The study's cells, in their order, once its options are checked (`--list-cells`).
+pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError> {
+    options.check()?;
+    Ok(study_grid(options))
 }
 
 /// Computes one cell of the study, by id, in this process, into its run folder: what

@@ -66,7 +66,7 @@ where
     run_as(vec![program], argv.into_iter().map(Into::into).collect())
 }
 
-/// [`run`], with `program` as the command that runs demoplan again.
+/// [`run`], with `program` (not empty) as the command that runs demoplan again.
 pub fn run_as(program: Vec<OsString>, argv: Vec<OsString>) -> ExitCode {
     stop_cleanly_when_stdout_fails();
     let this = Invocation {

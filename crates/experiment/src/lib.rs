@@ -131,3 +131,27 @@ pub enum ExperimentError {
     #[error("{}: {message}", path.display())]
     Io { path: PathBuf, message: String },
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_time_left_comes_from_the_cells_computed_so_far() {
+        let at = |done, reused, secs| Progress {
+            done,
+            failed: 0,
+            reused,
+            total: 10,
+            current: "",
+            elapsed: Duration::from_secs(secs),
+        };
+        // Nothing computed yet (reused cells took no time): no estimate.
+        assert_eq!(at(4, 4, 3).time_left(), None);
+        // 2 computed in 10 s, 4 to go: 20 s.
+        let p = at(6, 4, 10);
+        assert_eq!(p.remaining(), 4);
+        assert_eq!(p.time_left(), Some(Duration::from_secs(20)));
+        assert_eq!(at(10, 4, 10).time_left(), Some(Duration::ZERO));
+    }
+}

@@ -834,6 +834,58 @@ mod tests {
     }
 
     #[test]
+    fn submit_waits_for_the_collect_job_and_exits_with_its_code() {
+        let dir = scratch("wait");
+        let bin = dir.join("bin");
+        std::fs::create_dir_all(&bin).unwrap();
+        let n = dir.join("n");
+        std::fs::write(bin.join("sbatch"), "#!/bin/bash\necho \"7;demoplan\"\n").unwrap();
+        // Running twice, then what the test's `STATE` says, as `scontrol show job -o`.
+        std::fs::write(
+            bin.join("scontrol"),
+            format!(
+                "#!/bin/bash\necho x >>{n}\nif [ $(wc -l <{n}) -le 2 ]; then\n\
+                 echo 'JobId=7 JobName=c JobState=RUNNING Reason=None ExitCode=0:0'\n\
+                 else echo \"JobId=7 JobName=c $STATE DerivedExitCode=0:0\"; fi\n",
+                n = n.display()
+            ),
+        )
+        .unwrap();
+        for tool in ["sbatch", "scontrol"] {
+            make_executable(&bin.join(tool)).unwrap();
+        }
+        let job = write_job(
+            &grid(1, 20),
+            &command(Path::new("/opt/demoplan"), &dir),
+            &SlurmOptions::new(&dir.join("jobs")),
+        )
+        .unwrap();
+        let path = format!(
+            "{}:{}",
+            bin.display(),
+            std::env::var("PATH").unwrap_or_default()
+        );
+        for (state, code) in [
+            ("JobState=COMPLETED Reason=None ExitCode=0:0", 0),
+            ("JobState=FAILED Reason=NonZeroExitCode ExitCode=4:0", 4),
+            ("JobState=TIMEOUT Reason=TimeLimit ExitCode=0:15", 1),
+        ] {
+            let _ = std::fs::remove_file(&n);
+            let out = Command::new("bash")
+                .arg(&job.submit)
+                .arg("--wait")
+                .env("PATH", &path)
+                .env("STATE", state)
+                .output()
+                .unwrap();
+            assert_eq!(out.status.code(), Some(code), "{state}: {out:?}");
+            // It polled until the job had ended.
+            assert_eq!(std::fs::read_to_string(&n).unwrap().lines().count(), 3);
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn relative_programs_and_empty_grids_are_refused() {
         let dir = scratch("refused");
         let e = write_job(

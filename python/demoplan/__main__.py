@@ -21,7 +21,9 @@ def main(argv: Optional[List[str]] = None) -> None:
     # Rust code looks at, so give SIGINT back its default action, as the binary has it.
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     # "demoplan" as the program's name, so that help and errors read as the binary's.
-    sys.exit(run(["demoplan", *args]))
+    # A grid runs its cells as child processes of this same command: Python running the
+    # package, not the interpreter's executable alone.
+    sys.exit(run(["demoplan", *args], [sys.executable, "-m", "demoplan"]))
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@ from typing import List, Optional, Tuple
 
 __version__: str
 
-def run(argv: List[str]) -> int: ...
+def run(argv: List[str], program: Optional[List[str]] = None) -> int: ...
 def plan(
     domain: str,
     domain_name: str,

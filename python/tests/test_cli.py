@@ -98,3 +98,22 @@ def test_plan_writes_the_same_plan_with_the_same_exit_code(
 def test_version_is_the_crates(demoplan_binary: pathlib.Path, tmp_path: pathlib.Path) -> None:
     _, out, _ = run([str(demoplan_binary), "--version"], tmp_path)
     assert out.split() == ["demoplan", demoplan.__version__]
+
+
+@pytest.mark.parametrize("entry", ["console script", "python -m demoplan"])
+def test_a_grids_cells_run_this_command_again(entry: str, tmp_path: pathlib.Path) -> None:
+    """A grid runs each cell as a child process of its own command line. In Python this
+    process's executable is the interpreter, so the children must be
+    ``python -m demoplan ... --cell ID``: a wrong command line would crash every cell
+    (exit 1, "cell(s) crashed")."""
+    command = console_script() if entry == "console script" else [sys.executable, "-m", "demoplan"]
+    out = tmp_path / "grid"
+    grid = ["study", "-o", str(out), "--seeds", "3", "--hands", "1", "--heights", "2", "--time-limit", "60"]
+    code, stdout, stderr = run(command + grid + ["-j", "2"], tmp_path)
+    assert code == 0, stdout + stderr
+    assert "6 runs (6 computed now, 0 from earlier results, 2 at a time)" in stdout, stdout
+    assert "crashed" not in stderr, stderr
+    records = sorted(out.glob("runs-00001-00100/*/record.json"))
+    assert len(records) == 6
+    for record in records:
+        assert '"crashed"' not in record.read_text()

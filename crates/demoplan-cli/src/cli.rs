@@ -560,6 +560,62 @@ pub struct FastDownwardArgs {
     pub fd: Option<PathBuf>,
 }
 
+/// A grid's options (`reproduce`, `study`; docs/grids.md).
+#[derive(Debug, Args)]
+pub struct GridArgs {
+    /// Cells at once, each a child process of its own (default: the number of cores).
+    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
+    pub jobs: Option<u32>,
+    /// Compute only the cell with this id into its run folder under -o DIR, and print
+    /// its record as one JSON line (what each child process does).
+    #[arg(long, value_name = "ID")]
+    pub cell: Option<String>,
+    /// Compute every cell again, even those with a result in -o DIR.
+    #[arg(long)]
+    pub force: bool,
+    /// Print the cells (task, id, Lab's names, conditions) and run nothing.
+    #[arg(long)]
+    pub list_cells: bool,
+}
+
+/// The grid as Slurm jobs (`reproduce`, `study`; docs/grids.md).
+#[derive(Debug, Args)]
+pub struct SlurmArgs {
+    /// Write the grid as Slurm array jobs into DIR (scripts and logs; the results go to
+    /// -o DIR) and run nothing: `bash DIR/submit.sh` submits them.
+    #[arg(long, value_name = "DIR")]
+    pub slurm: Option<PathBuf>,
+    /// `sbatch --partition` (default: none, the cluster's default partition).
+    #[arg(long, value_name = "NAME", requires = "slurm")]
+    pub slurm_partition: Option<String>,
+    /// `sbatch --cpus-per-task`.
+    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
+    pub slurm_cpus_per_task: u32,
+    /// `sbatch --mem` (default: the memory limit plus 512M).
+    #[arg(long, value_name = "MEMORY", requires = "slurm", value_parser = experiment::grid::slurm::parse_mem)]
+    pub slurm_mem: Option<u64>,
+    /// `sbatch --time` of an array task (default: the time limit plus a margin, times
+    /// the cells per task).
+    #[arg(long, value_name = "TIME", requires = "slurm", value_parser = experiment::grid::slurm::parse_time)]
+    pub slurm_time: Option<std::time::Duration>,
+    /// Cells per array task (default: as few as keep the array within 1000 tasks).
+    #[arg(long, value_name = "N", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub slurm_cells_per_task: Option<u32>,
+    /// Array tasks running at once, at most (K of `--array=1-N%K`).
+    #[arg(long, value_name = "K", default_value_t = 100, requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub slurm_max_running: u32,
+    /// Seed of the shuffle that deals the cells to the array tasks.
+    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
+    pub slurm_seed: u64,
+    /// A further `sbatch` option for every job, e.g. `--slurm-sbatch=--account=NAME`.
+    #[arg(long, value_name = "OPTION", requires = "slurm")]
+    pub slurm_sbatch: Vec<String>,
+    /// Compute nothing: build the report from the results in -o DIR (what the Slurm
+    /// collect job runs; cells without a result are an error naming them).
+    #[arg(long, hide = true)]
+    pub collect: bool,
+}
+
 /// The options of `reproduce`.
 #[derive(Debug, Args)]
 #[command(mut_arg("time_limit", |a| a.default_value("60")))]
@@ -596,14 +652,10 @@ pub struct ReproduceArgs {
     /// Hands in the problems' scene: 1 (a one-armed robot, as the paper's TIAGo) or 2.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u64).range(1..=2))]
     pub hands: u64,
-    /// Runs at once, each in a child process of its own. The default, 1, runs them one
-    /// after another in this process: the tables' times are then each a run alone.
-    #[arg(short = 'j', long = "jobs", value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=256))]
-    pub jobs: u32,
-    /// Compute only the cell with this id and print its record as one JSON line (what
-    /// each child process of a parallel reproduction does).
-    #[arg(long, value_name = "ID", hide = true)]
-    pub cell: Option<String>,
+    #[command(flatten)]
+    pub grid: GridArgs,
+    #[command(flatten)]
+    pub slurm: SlurmArgs,
 }
 
 /// The options of `study`.
@@ -648,12 +700,8 @@ pub struct StudyArgs {
     /// The output folder (created if missing; a folder with results resumes).
     #[arg(short = 'o', long = "out", value_name = "DIR", default_value = "study")]
     pub out: PathBuf,
-    /// Runs at once, each in a child process of its own (default: the number of
-    /// cores). `-j 1` runs them one after another in this process.
-    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
-    pub jobs: Option<u32>,
-    /// Compute only the cell with this id and print its record as one JSON line (what
-    /// each child process of a parallel study does).
-    #[arg(long, value_name = "ID", hide = true)]
-    pub cell: Option<String>,
+    #[command(flatten)]
+    pub grid: GridArgs,
+    #[command(flatten)]
+    pub slurm: SlurmArgs,
 }

@@ -1,6 +1,6 @@
 //! The progress bars, on standard error and only when it is a terminal: `reproduce` and
-//! `study` show cells done, the cell running and the time since the start with an
-//! estimate of the time left ([`Bar`]); `import` shows bytes read with the rate and the
+//! `study` show cells done, failed and to go, the cell running and the time since the
+//! start with the time left (`experiment::Progress::time_left`) ([`Bar`]); `import` shows bytes read with the rate and the
 //! time left ([`BytesBar`]).
 
 use std::io::IsTerminal;
@@ -26,20 +26,26 @@ impl Bar {
                 ProgressDrawTarget::hidden()
             },
         );
-        let style = ProgressStyle::with_template(
-            "[{bar:30}] {pos}/{len} {elapsed_precise} (about {eta} left) {msg}",
-        )
-        .map(|s| s.progress_chars("#> "))
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
+        let style = ProgressStyle::with_template("[{bar:30}] {pos}/{len} {elapsed_precise} {msg}")
+            .map(|s| s.progress_chars("#> "))
+            .unwrap_or_else(|_| ProgressStyle::default_bar());
         bar.set_style(style);
         Bar { bar }
     }
 
-    /// Shows where the grid is.
+    /// Shows where the grid is: cells done, failed and left, the time left.
     pub fn update(&self, p: experiment::Progress<'_>) {
         self.bar.set_length(p.total as u64);
         self.bar.set_position(p.done as u64);
-        self.bar.set_message(p.current.to_string());
+        let left = p
+            .time_left()
+            .map_or("?".into(), |t| format!("{:.0} s", t.as_secs_f64()));
+        self.bar.set_message(format!(
+            "{} failed, {} to go (about {left} left) {}",
+            p.failed,
+            p.remaining(),
+            p.current
+        ));
     }
 
     pub fn finish(&self) {

@@ -98,11 +98,14 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 }
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
-/// computing something that belongs in a library crate. The budget is 2,800 today; issue
-/// 21 aimed at 2,500. What is left: the option declarations and their help texts
-/// (`cli.rs`, about 650 lines, their wording pinned by the `--help` snapshots),
-/// diagnostics (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`: library errors
-/// rendered with miette, which no library crate may use, and mapped to exit codes; every
+/// computing something that belongs in a library crate. The budget is 2,950 today: 2,795
+/// after issue 21's last cut, plus issue 24's grids (`GridArgs`, declared once, the
+/// `Invocation` a grid's cells run again, the `--list-cells`/`--cell` glue) and `--slurm`
+/// (`SlurmArgs`, its help texts, the glue that hands them to `experiment::grid::slurm`);
+/// issue 21 aimed at 2,500. What is left: the option declarations and their help texts
+/// (`cli.rs`, their wording pinned by the `--help` snapshots), diagnostics
+/// (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`: library errors rendered with
+/// miette, which no library crate may use, and mapped to exit codes; every
 /// `recording::TextError` through one renderer), file handling (`input.rs`, `output.rs`),
 /// terminal plumbing (`progress.rs`, indicatif; the SIGPIPE hook in `lib.rs`; the
 /// experiments' child processes), and each command's calls and printing.
@@ -124,5 +127,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 2_800, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 2_950, "crates/demoplan-cli/src has {total} lines");
 }

@@ -1766,11 +1766,11 @@ fn study_writes_every_file_and_resumes() {
     assert_eq!(read("results.jsonl"), results);
     assert_eq!(read("runs.csv"), runs);
 
-    // A run killed while appending leaves half a line: that cell runs again, once.
-    let mut lines: Vec<&str> = results.lines().collect();
-    let last = lines.pop().unwrap();
-    let cut = format!("{}\n{}", lines.join("\n"), &last[..last.len() / 2]);
-    std::fs::write(out.join("results.jsonl"), cut).unwrap();
+    // A cell's record cut short (never by demoplan, which renames whole files into
+    // place) or gone: those cells run again, once each.
+    let record = out.join("runs-00001-00100/00007/record.json");
+    let text = std::fs::read_to_string(&record).unwrap();
+    std::fs::write(&record, &text[..text.len() / 2]).unwrap();
     let resumed = reduced_study(&out);
     assert_eq!(resumed.status.code(), Some(0), "{}", transcript(&resumed));
     assert!(
@@ -1779,6 +1779,184 @@ fn study_writes_every_file_and_resumes() {
         transcript(&resumed)
     );
     assert_eq!(read("results.jsonl").lines().count(), 48);
+}
+
+/// The cells' ids that `--list-cells` prints for the study `args` (its header left out).
+fn listed_cells(args: &[&str]) -> Vec<String> {
+    let list = succeeds(demoplan().arg("study").args(args).arg("--list-cells"));
+    let text = stdout_text(&list);
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("task\tid\talgorithm\tdomain\tproblem\tconditions")
+    );
+    lines
+        .map(|l| l.split('\t').nth(1).unwrap().to_string())
+        .collect()
+}
+
+/// Every cell's record in the grid's folder: it parses, it is of that cell, and
+/// results.jsonl holds each cell once, in the order `--list-cells` gives.
+fn assert_every_cell_whole(out: &Path, ids: &[String]) {
+    for (i, id) in ids.iter().enumerate() {
+        let task = i + 1;
+        let path = out.join(format!("runs-00001-00100/{task:05}/record.json"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let record: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(record["id"], id.as_str(), "{}", path.display());
+        let props = std::fs::read_to_string(path.with_file_name("properties")).unwrap();
+        let props: serde_json::Value = serde_json::from_str(&props).unwrap();
+        assert_eq!(props["demoplan_id"], id.as_str());
+    }
+    let results = std::fs::read_to_string(out.join("results.jsonl")).unwrap();
+    let got: Vec<String> = results
+        .lines()
+        .map(|l| {
+            let r: serde_json::Value = serde_json::from_str(l).unwrap();
+            r["id"].as_str().unwrap().to_string()
+        })
+        .collect();
+    assert_eq!(got, ids);
+}
+
+#[test]
+fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
+    let tmp = tempdir("grid-list");
+    let out = tmp.join("out");
+    let out_arg = out.to_str().unwrap();
+    let args = [
+        "-o",
+        out_arg,
+        "--seeds",
+        "3",
+        "--hands",
+        "1",
+        "--heights",
+        "2",
+    ];
+    let ids = listed_cells(&args);
+    // 1 seed x 1 hand x 1 height x 2 planners x 3 levels, each once.
+    assert_eq!(ids.len(), 6);
+    assert_eq!(
+        ids.iter().collect::<std::collections::BTreeSet<_>>().len(),
+        6
+    );
+    assert!(!out.exists(), "--list-cells wrote {}", out.display());
+    let computed = |extra: &[&str]| {
+        let done = succeeds(
+            demoplan()
+                .arg("study")
+                .args(args)
+                .args(["-j", "2"])
+                .args(extra),
+        );
+        let stdout = stdout_text(&done);
+        assert!(stdout.contains("2 at a time"), "{stdout}");
+        stdout
+    };
+    assert!(computed(&[]).contains("6 runs (6 computed now"));
+    assert!(computed(&[]).contains("6 runs (0 computed now"));
+    assert!(computed(&["--force"]).contains("6 runs (6 computed now"));
+    assert_every_cell_whole(&out, &ids);
+    // `--cell ID` computes that one cell and prints its record.
+    let one = succeeds(demoplan().arg("study").args(args).args(["--cell", &ids[2]]));
+    let record: serde_json::Value = serde_json::from_str(stdout_text(&one).trim()).unwrap();
+    assert_eq!(record["id"], ids[2].as_str());
+    exits_saying(
+        36,
+        "no cell of this grid has that id",
+        demoplan()
+            .arg("study")
+            .args(args)
+            .args(["--cell", "0123456789abcdef"]),
+    );
+}
+
+/// A study interrupted as Ctrl-C in a terminal interrupts it (SIGINT to its process
+/// group, the cells' processes with it), then killed outright, and run again: it
+/// completes, computing only the cells without a record, and every cell's result is
+/// whole.
+#[test]
+fn an_interrupted_study_resumes_with_every_cell_whole() {
+    use std::os::unix::process::CommandExt;
+    let tmp = tempdir("grid-interrupt");
+    let out = tmp.join("out");
+    let out_arg = out.to_str().unwrap();
+    let args = [
+        "-o",
+        out_arg,
+        "--seeds",
+        "1-2",
+        "--hands",
+        "1",
+        "--heights",
+        "2-3",
+        "--time-limit",
+        "20",
+    ];
+    let ids = listed_cells(&args);
+    assert_eq!(ids.len(), 24);
+    let mut grid = demoplan()
+        .arg("study")
+        .args(args)
+        .args(["-j", "2"])
+        .process_group(0)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let group = format!("-{}", grid.id());
+    // Wait for a cell to have started (its marker), not for a time.
+    let started = || {
+        (1..=ids.len()).any(|t| {
+            out.join(format!("runs-00001-00100/{t:05}/started"))
+                .exists()
+        })
+    };
+    let waited = std::time::Instant::now();
+    while !started() {
+        assert!(
+            grid.try_wait().unwrap().is_none(),
+            "the grid ended before a cell started"
+        );
+        assert!(waited.elapsed().as_secs() < 300, "no cell started in 300 s");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let signal = |name: &str| {
+        std::process::Command::new("kill")
+            .args([name, "--", &group])
+            .status()
+            .unwrap()
+    };
+    assert!(signal("-INT").success());
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    // Whatever is left of the group (nothing, normally) is killed outright.
+    signal("-KILL");
+    let status = grid.wait().unwrap();
+    assert!(!status.success(), "the grid was not interrupted: {status}");
+    // Records that are results (a cell whose process the grid saw die in the interrupt
+    // may have a record of the crash, which is computed again).
+    let whole = (1..=ids.len())
+        .filter(|t| {
+            let path = out.join(format!("runs-00001-00100/{t:05}/record.json"));
+            std::fs::read_to_string(path).is_ok_and(|text| {
+                let r: serde_json::Value = serde_json::from_str(&text).unwrap();
+                r.get("crashed").is_none()
+            })
+        })
+        .count();
+    assert!(
+        whole < ids.len(),
+        "every cell was done before the interruption"
+    );
+
+    let again = succeeds(demoplan().arg("study").args(args).args(["-j", "2"]));
+    let stdout = stdout_text(&again);
+    assert!(
+        stdout.contains(&format!("24 runs ({} computed now", 24 - whole)),
+        "{whole} records were there: {stdout}"
+    );
+    assert_every_cell_whole(&out, &ids);
 }
 
 #[test]
@@ -1883,6 +2061,76 @@ fn study_refuses_bad_options_before_writing_anything() {
         let err = stderr_text(&out);
         assert!(err.contains(what), "{args:?}: {err}");
         assert!(!tmp.join("out").exists(), "{args:?} wrote output");
+    }
+}
+
+#[test]
+fn slurm_writes_the_grid_as_jobs_and_runs_nothing() {
+    let tmp = tempdir("study-slurm");
+    let grid = [
+        "study",
+        "--seeds",
+        "1",
+        "--hands",
+        "1",
+        "--heights",
+        "2",
+        "-o",
+        "out",
+    ];
+    let out = demoplan()
+        .current_dir(&tmp)
+        .args(grid)
+        .args(["--slurm", "jobs", "--slurm-partition", "short"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", transcript(&out));
+    assert!(
+        stdout_text(&out).contains("jobs/submit.sh"),
+        "{}",
+        transcript(&out)
+    );
+    let cells = std::fs::read_to_string(tmp.join("jobs/cells.sh")).unwrap();
+    assert!(cells.contains("#SBATCH --partition=short\n"), "{cells}");
+    // `auto` on Slurm: 3G per cell, plus the margin.
+    assert!(cells.contains("#SBATCH --mem=3584M\n"), "{cells}");
+    assert!(
+        cells.contains("--memory-limit 3221225472 --cell"),
+        "{cells}"
+    );
+    assert!(tmp.join("jobs/submit.sh").exists() && tmp.join("jobs/collect.sh").exists());
+    assert!(!tmp.join("out").exists(), "--slurm ran the grid");
+    // Bad options are refused before anything is written.
+    for (args, what) in [
+        (vec!["--heights", "1-3", "--slurm", "bad"], "--heights"),
+        (vec!["--slurm", "bad", "--slurm-mem", "lots"], "--slurm-mem"),
+        (
+            vec!["--slurm", "bad", "--slurm-max-running", "0"],
+            "--slurm-max-running",
+        ),
+        (vec!["--slurm-partition", "short"], "--slurm"),
+    ] {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .args(["study", "-o", "out"])
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(36),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(
+            stderr_text(&out).contains(what),
+            "{args:?}: {}",
+            transcript(&out)
+        );
+        assert!(
+            !tmp.join("bad").exists() && !tmp.join("out").exists(),
+            "{args:?}"
+        );
     }
 }
 

@@ -17,10 +17,15 @@ mod learning;
 
 /// Runs the `demoplan` command line on `argv` (its first item is the program's name) in
 /// this process, printing what the binary prints, and returns its exit code. The GIL is
-/// released for the whole run.
+/// released for the whole run. `program` is the command that runs demoplan again (a
+/// grid's cells; this process's executable is Python, not demoplan).
 #[pyfunction]
-fn run(py: Python<'_>, argv: Vec<OsString>) -> i32 {
-    py.detach(|| demoplan_cli::run(argv).0)
+#[pyo3(signature = (argv, program=None))]
+fn run(py: Python<'_>, argv: Vec<OsString>, program: Option<Vec<OsString>>) -> i32 {
+    py.detach(|| match program {
+        Some(program) if !program.is_empty() => demoplan_cli::run_as(program, argv).0,
+        _ => demoplan_cli::run(argv).0,
+    })
 }
 
 /// What [`plan`] hands back to Python: the outcome word, the plan file's text (when

@@ -10,8 +10,9 @@ use crate::{ExperimentError, Reproduction, StudyOutcome};
 
 impl ExperimentError {
     /// A bad option is a command line error (36), a cell that cannot be set up or a
-    /// damaged results file an input error (31), a file that cannot be read or written
-    /// an I/O error (35).
+    /// damaged results file an input error (31), cells without a result when a grid is
+    /// collected a failed check (1: running the grid again computes them), a file that
+    /// cannot be read or written an I/O error (35).
     pub fn exit_code(&self) -> ExitCode {
         match self {
             ExperimentError::Options(_)
@@ -20,19 +21,38 @@ impl ExperimentError {
             ExperimentError::Condition(_) | ExperimentError::Results { .. } => {
                 ExitCode::INPUT_ERROR
             }
+            ExperimentError::Incomplete { .. } => ExitCode::CHECK_FAILED,
             ExperimentError::Io { .. } => ExitCode::CRITICAL_ERROR,
         }
     }
 }
 
-/// A grid whose plans all passed the execution check succeeded; one that failed it is a
-/// failed check (1).
-fn checked(failed_executions: usize) -> ExitCode {
-    if failed_executions > 0 {
+/// A grid whose cells all ran and whose plans all passed the execution check succeeded;
+/// a crashed cell or a failed check is a failed check (1).
+fn checked(crashed: usize, failed_executions: usize) -> ExitCode {
+    if crashed > 0 || failed_executions > 0 {
         ExitCode::CHECK_FAILED
     } else {
         ExitCode::SUCCESS
     }
+}
+
+/// What failed, for standard error: cells whose process crashed (their records say why,
+/// and the next run computes them again) and plans that failed the execution check.
+fn failures(crashed: usize, failed_executions: usize) -> Option<String> {
+    let mut text = String::new();
+    if crashed > 0 {
+        text.push_str(&format!(
+            "error: {crashed} cell(s) crashed (their records in results.jsonl say why; run \
+             again to compute them)\n"
+        ));
+    }
+    if failed_executions > 0 {
+        text.push_str(&format!(
+            "error: {failed_executions} plan(s) failed the execution check (see tables.md)\n"
+        ));
+    }
+    (!text.is_empty()).then_some(text)
 }
 
 impl Reproduction {
@@ -47,32 +67,29 @@ impl Reproduction {
         )
     }
 
-    /// What failed, for standard error: the plans that failed the execution check.
+    /// What failed, for standard error: crashed cells and plans that failed the
+    /// execution check.
     pub fn failures(&self) -> Option<String> {
-        (self.failed_executions > 0).then(|| {
-            format!(
-                "error: {} plan(s) failed the execution check (see tables.md)\n",
-                self.failed_executions
-            )
-        })
+        failures(self.crashed, self.failed_executions)
     }
 
-    /// [`ExitCode::CHECK_FAILED`] if a plan failed the execution check.
+    /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.failed_executions)
+        checked(self.crashed, self.failed_executions)
     }
 }
 
 impl StudyOutcome {
-    /// The last line: runs computed now and found in earlier results, `jobs` at a time
-    /// in `elapsed`, failed execution checks, and where the results are.
-    pub fn closing_line(&self, out: &Path, jobs: usize, elapsed: Duration) -> String {
+    /// The last line: runs computed now and found in earlier results, how many at a
+    /// time, in `elapsed`, failed execution checks, and where the results are.
+    pub fn closing_line(&self, out: &Path, elapsed: Duration) -> String {
         format!(
-            "Study: {} runs ({} computed now, {} from earlier results, {jobs} at a time) in \
+            "Study: {} runs ({} computed now, {} from earlier results, {} at a time) in \
              {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}\n",
             self.records.len(),
             self.computed,
             self.records.len().saturating_sub(self.computed),
+            self.jobs,
             elapsed.as_secs_f64(),
             self.failed_executions,
             out.display(),
@@ -80,9 +97,15 @@ impl StudyOutcome {
         )
     }
 
-    /// [`ExitCode::CHECK_FAILED`] if a plan failed the execution check.
+    /// What failed, for standard error: crashed cells and plans that failed the
+    /// execution check.
+    pub fn failures(&self) -> Option<String> {
+        failures(self.crashed, 0)
+    }
+
+    /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.failed_executions)
+        checked(self.crashed, self.failed_executions)
     }
 }
 
@@ -95,13 +118,15 @@ mod tests {
         let mut done = StudyOutcome {
             records: Vec::new(),
             computed: 0,
+            crashed: 0,
+            jobs: 3,
             failed_executions: 0,
             report: "out/report.html".into(),
         };
         assert_eq!(done.exit_code(), ExitCode::SUCCESS);
         done.failed_executions = 2;
         assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
-        let line = done.closing_line(Path::new("out"), 3, Duration::from_secs(7));
+        let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
         assert_eq!(
             line,
             "Study: 0 runs (0 computed now, 0 from earlier results, 3 at a time) in 7 s; 2 \
@@ -111,6 +136,9 @@ mod tests {
             summary: String::new(),
             tables: String::new(),
             records: Vec::new(),
+            computed: 0,
+            crashed: 0,
+            jobs: 1,
             failed_executions: 1,
             report: "r/report.html".into(),
         };
@@ -119,6 +147,42 @@ mod tests {
             reproduction.failures().as_deref(),
             Some("error: 1 plan(s) failed the execution check (see tables.md)\n")
         );
+    }
+
+    #[test]
+    fn a_crashed_cell_fails_the_grid_and_says_so() {
+        let mut done = StudyOutcome {
+            records: Vec::new(),
+            computed: 4,
+            crashed: 0,
+            jobs: 2,
+            failed_executions: 0,
+            report: "out/report.html".into(),
+        };
+        assert_eq!(done.failures(), None);
+        done.crashed = 1;
+        assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
+        assert_eq!(
+            done.failures().as_deref(),
+            Some(
+                "error: 1 cell(s) crashed (their records in results.jsonl say why; run again \
+                 to compute them)\n"
+            )
+        );
+        let reproduction = Reproduction {
+            summary: String::new(),
+            tables: String::new(),
+            records: Vec::new(),
+            computed: 4,
+            crashed: 2,
+            jobs: 2,
+            failed_executions: 1,
+            report: "r/report.html".into(),
+        };
+        assert_eq!(reproduction.exit_code(), ExitCode::CHECK_FAILED);
+        let text = reproduction.failures().unwrap();
+        assert!(text.starts_with("error: 2 cell(s) crashed"), "{text}");
+        assert!(text.ends_with("error: 1 plan(s) failed the execution check (see tables.md)\n"));
     }
 
     #[test]
@@ -138,5 +202,11 @@ mod tests {
             message: String::new(),
         };
         assert_eq!(io.exit_code(), ExitCode::CRITICAL_ERROR);
+        let incomplete = ExperimentError::Incomplete {
+            out: "r".into(),
+            missing: vec!["abc".into()],
+            total: 3,
+        };
+        assert_eq!(incomplete.exit_code(), ExitCode::CHECK_FAILED);
     }
 }

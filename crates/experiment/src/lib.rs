@@ -30,9 +30,9 @@
 //! ```
 
 mod cell;
-mod children;
 mod closing;
 mod findings;
+pub mod grid;
 mod lab;
 mod memory_limit;
 mod numbers;
@@ -43,30 +43,52 @@ mod reproduce;
 mod study;
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The paper's published numbers (its Tables 3 and 4, library statistics, ratios).
 pub use report::paper;
 
 pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAMS};
-pub use children::CellCommand;
 pub use findings::findings;
+pub use grid::{cell_list, CellCommand, GridRun, RunLayout, Runner};
 pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
 pub use memory_limit::auto_memory_limit;
 pub use numbers::{numbers, sizes};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
-pub use reproduce::{reproduce, reproduce_cell, ReproduceOptions, Reproduction};
-pub use study::{study, study_cell, study_grid, StudyOptions, StudyOutcome};
+pub use reproduce::{reproduce, reproduce_cell, reproduce_cells, ReproduceOptions, Reproduction};
+pub use study::{study, study_cell, study_cells, study_grid, StudyOptions, StudyOutcome};
 
-/// Where a grid is: cells done of the total, the cell now running, time since start.
+/// Where a grid is: cells done (reused ones among them) and failed of the total, the
+/// cell now running, time since start.
 #[derive(Debug, Clone, Copy)]
 pub struct Progress<'a> {
     pub done: usize,
+    /// Of `done`, the cells whose process crashed.
+    pub failed: usize,
+    /// Of `done`, the cells whose results were there already (they took no time).
+    pub reused: usize,
     pub total: usize,
     /// What runs now, for people: e.g. `lmcut full height 5 seed 3`.
     pub current: &'a str,
     pub elapsed: Duration,
+}
+
+impl Progress<'_> {
+    /// Cells not done yet.
+    pub fn remaining(&self) -> usize {
+        self.total.saturating_sub(self.done)
+    }
+
+    /// The time left, from the rate of the cells computed so far (reused ones took no
+    /// time; cells at once are in the rate): `None` before the first is done.
+    pub fn time_left(&self) -> Option<Duration> {
+        let computed = self.done.saturating_sub(self.reused);
+        (computed > 0).then(|| {
+            self.elapsed
+                .mul_f64(self.remaining() as f64 / computed as f64)
+        })
+    }
 }
 
 /// What can go wrong in an experiment. "No plan" and "out of time" are outcomes in the
@@ -92,126 +114,44 @@ pub enum ExperimentError {
         line: usize,
         message: String,
     },
+    /// Cells without a result, when a grid's results are collected.
+    #[error(
+        "{}: {} of {total} cells have no result, so the report is not written; run the \
+         grid again to compute them: {}",
+        out.display(),
+        missing.len(),
+        missing.join(", ")
+    )]
+    Incomplete {
+        out: PathBuf,
+        missing: Vec<String>,
+        total: usize,
+    },
     /// A file could not be read or written.
     #[error("{}: {message}", path.display())]
     Io { path: PathBuf, message: String },
 }
 
-/// How a grid's cells are computed.
-#[derive(Debug)]
-pub enum Runner<'a> {
-    /// In this process, one after another (each run's peak heap measured alone).
-    InProcess(&'a mut Lab),
-    /// In child processes, several at a time ([`CellCommand`]); needs a results file,
-    /// where the children of Algorithm 1 cells find the runs they reuse.
-    Children(&'a CellCommand),
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Runs `cells`, skipping those whose id has a record in `done`, appending each new
-/// record to `results` (when given) as it finishes. Algorithm 1 cells run after every
-/// other cell, so that they reuse the runs of the levels the grid has as cells
-/// ([`Lab::run`]). Returns the records of every cell, `done`'s and the new ones, in
-/// the order of `cells`.
-pub fn run_cells(
-    runner: Runner<'_>,
-    cells: &[Cell],
-    done: &[RunRecord],
-    results: Option<&std::path::Path>,
-    progress: &mut dyn FnMut(Progress<'_>),
-    describe: &dyn Fn(&Cell) -> String,
-) -> Result<Vec<RunRecord>, ExperimentError> {
-    let start = Instant::now();
-    let ids: Vec<String> = cells.iter().map(Cell::id).collect();
-    let mut known: Known = done.iter().map(|r| (r.id.clone(), r.clone())).collect();
-    let (levels, widenings): (Vec<usize>, Vec<usize>) = (0..cells.len())
-        .filter(|&i| !known.contains_key(&ids[i]))
-        .partition(|&i| cells[i].level != LevelChoice::Algorithm1);
-    let total = cells.len();
-    let mut finished = total - levels.len() - widenings.len();
-    let record = |i: usize, r: RunRecord, known: &mut Known| {
-        if let Some(path) = results {
-            append_record(path, &r)?;
-        }
-        known.insert(ids[i].clone(), r);
-        Ok::<(), ExperimentError>(())
-    };
-    let mut runner = runner;
-    for phase in [levels, widenings] {
-        match &mut runner {
-            Runner::InProcess(lab) => {
-                for i in phase {
-                    let what = describe(&cells[i]);
-                    progress(Progress {
-                        done: finished,
-                        total,
-                        current: &what,
-                        elapsed: start.elapsed(),
-                    });
-                    let r = lab.run(&cells[i], &known)?;
-                    record(i, r, &mut known)?;
-                    finished += 1;
-                }
-            }
-            Runner::Children(command) => {
-                if results.is_none() {
-                    return Err(ExperimentError::Options(
-                        "cells in child processes need a results file".into(),
-                    ));
-                }
-                let mut running = String::new();
-                command.run_all(cells, &phase, &mut |event| {
-                    match event {
-                        children::Event::Started(i) => running = describe(&cells[i]),
-                        children::Event::Finished(i, r) => {
-                            record(i, *r, &mut known)?;
-                            finished += 1;
-                        }
-                    }
-                    progress(Progress {
-                        done: finished,
-                        total,
-                        current: &running,
-                        elapsed: start.elapsed(),
-                    });
-                    Ok(())
-                })?;
-            }
-        }
+    #[test]
+    fn the_time_left_comes_from_the_cells_computed_so_far() {
+        let at = |done, reused, secs| Progress {
+            done,
+            failed: 0,
+            reused,
+            total: 10,
+            current: "",
+            elapsed: Duration::from_secs(secs),
+        };
+        // Nothing computed yet (reused cells took no time): no estimate.
+        assert_eq!(at(4, 4, 3).time_left(), None);
+        // 2 computed in 10 s, 4 to go: 20 s.
+        let p = at(6, 4, 10);
+        assert_eq!(p.remaining(), 4);
+        assert_eq!(p.time_left(), Some(Duration::from_secs(20)));
+        assert_eq!(at(10, 4, 10).time_left(), Some(Duration::ZERO));
     }
-    progress(Progress {
-        done: total,
-        total,
-        current: "done",
-        elapsed: start.elapsed(),
-    });
-    ids.iter()
-        .map(|id| {
-            known
-                .get(id)
-                .cloned()
-                .ok_or_else(|| ExperimentError::Condition(format!("cell {id} has no record")))
-        })
-        .collect()
-}
-
-/// Computes the cell of `cells` whose id is `id`, as a child process of
-/// [`CellCommand`] does: Algorithm 1 reuses the records already in `results`.
-pub fn run_cell(
-    lab: &mut Lab,
-    cells: &[Cell],
-    id: &str,
-    results: &std::path::Path,
-) -> Result<RunRecord, ExperimentError> {
-    let cell = cells.iter().find(|c| c.id() == id).ok_or_else(|| {
-        ExperimentError::Options(format!("--cell {id}: no cell of this grid has that id"))
-    })?;
-    let known: Known = if cell.level == LevelChoice::Algorithm1 {
-        read_records(results)?
-            .into_iter()
-            .map(|r| (r.id.clone(), r))
-            .collect()
-    } else {
-        Known::new()
-    };
-    lab.run(cell, &known)
 }

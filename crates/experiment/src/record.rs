@@ -116,6 +116,11 @@ pub struct RunRecord {
     /// Why the run is an error, if it is one.
     #[serde(default)]
     pub error: Option<String>,
+    /// The cell's process crashed (died, hung, or exited with an unexpected code): the
+    /// record says so in `error` and is no result, so the grid computes the cell again
+    /// when run again. Absent from the line when false.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub crashed: bool,
 }
 
 impl RunRecord {
@@ -143,6 +148,7 @@ impl RunRecord {
             unit_cost: false,
             widening: Vec::new(),
             error: None,
+            crashed: false,
         }
     }
 
@@ -242,28 +248,6 @@ pub fn read_records(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
     }
 }
 
-/// Reads a results file to resume from it: like [`read_records`], and a last line cut
-/// short is removed from the file (atomically), so that the next append starts on a
-/// line of its own.
-pub fn read_records_for_append(path: &Path) -> Result<Vec<RunRecord>, ExperimentError> {
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
-        Err(e) => {
-            return Err(ExperimentError::Io {
-                path: path.to_path_buf(),
-                message: e.to_string(),
-            })
-        }
-    };
-    let records = parse_records(&text, path)?;
-    if !text.is_empty() && !text.ends_with('\n') {
-        let complete = text.rfind('\n').map_or("", |i| &text[..=i]);
-        crate::output::write_text(path, complete)?;
-    }
-    Ok(records)
-}
-
 /// Appends one record as one line, in one write, and flushes it to the disk: a crash
 /// loses at most the line being written, which [`parse_records`] then leaves out.
 pub fn append_record(path: &Path, record: &RunRecord) -> Result<(), ExperimentError> {
@@ -333,6 +317,7 @@ mod tests {
             unit_cost: false,
             widening: vec![],
             error: None,
+            crashed: false,
         }
     }
 

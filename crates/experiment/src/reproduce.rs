@@ -13,11 +13,12 @@ use slim::{FastDownward, MemoryProbe, Outcome};
 
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
+use crate::grid::{collect, run_cell, run_grid, RunLayout, Runner};
 use crate::lab::{tower_problem, towers, Lab};
 use crate::output::{condition_fields, create_dir, machine, opt, write_png, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
-use crate::{run_cell, run_cells, CellCommand, ExperimentError, Progress, Runner};
+use crate::{CellCommand, ExperimentError, Progress};
 
 /// What `reproduce` runs.
 #[derive(Debug, Clone)]
@@ -46,6 +47,11 @@ pub struct ReproduceOptions {
     /// Run the cells in child processes, several at a time; `None` runs them here,
     /// one after another.
     pub children: Option<CellCommand>,
+    /// Compute every cell again, even those with a result in the folder.
+    pub force: bool,
+    /// Compute nothing: build the report from the results in the folder (a cluster's
+    /// collect job); cells without one are an error naming them.
+    pub collect_only: bool,
 }
 
 /// What `reproduce` did.
@@ -57,6 +63,12 @@ pub struct Reproduction {
     pub tables: String,
     /// Every run's record.
     pub records: Vec<RunRecord>,
+    /// Cells computed now (the others were in the folder already).
+    pub computed: usize,
+    /// Cells whose process crashed now (their records say why).
+    pub crashed: usize,
+    /// Cells computed at once.
+    pub jobs: usize,
     /// Plans that failed the execution check.
     pub failed_executions: usize,
     /// The report page.
@@ -111,10 +123,9 @@ fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), 
     Ok((lab, library))
 }
 
-/// Computes one cell of the reproduction, by id, in this process: what each child
-/// process of a reproduction run with [`ReproduceOptions::children`] does.
-pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
-    let (mut lab, library) = lab_and_library(options)?;
+/// The lab and the grid's cells (the levels come from the library it learns).
+fn lab_and_cells(options: &ReproduceOptions) -> Result<(Lab, Vec<Cell>), ExperimentError> {
+    let (lab, library) = lab_and_library(options)?;
     let prios: Vec<usize> = levels(&library, DomainOptions::default())
         .iter()
         .map(|l| l.prio)
@@ -125,8 +136,25 @@ pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord,
                 .is_none_or(|chosen| chosen.contains(p))
         })
         .collect();
-    let cells = reproduce_grid(options, &prios);
-    run_cell(&mut lab, &cells, id, &options.out.join("results.jsonl"))
+    Ok((lab, reproduce_grid(options, &prios)))
+}
+
+/// The reproduction's cells, in their order (`--list-cells`; [`crate::grid::cell_list`]).
+pub fn reproduce_cells(options: &ReproduceOptions) -> Result<Vec<Cell>, ExperimentError> {
+    Ok(lab_and_cells(options)?.1)
+}
+
+/// Computes one cell of the reproduction, by id, in this process: what each child
+/// process of a reproduction run with [`ReproduceOptions::children`] does.
+pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
+    let (mut lab, cells) = lab_and_cells(options)?;
+    run_cell(
+        &mut lab,
+        &cells,
+        id,
+        &RunLayout::new(&options.out),
+        options.force,
+    )
 }
 
 /// The paper's goal of a record (its tower's height less one).
@@ -222,15 +250,19 @@ pub fn reproduce(
             c.conditions.height - 1
         )
     };
-    // A reproduction starts afresh; its results file grows as cells finish, so that
-    // child processes find the runs Algorithm 1 reuses.
-    let results = out.join("results.jsonl");
-    write_text(&results, "")?;
+    // A grid: each cell writes its run folder as it finishes; cells already there are
+    // reused unless forced.
     let runner = match &options.children {
         Some(command) => Runner::Children(command),
         None => Runner::InProcess(&mut lab),
     };
-    let records = run_cells(runner, &cells, &[], Some(&results), progress, &describe)?;
+    let jobs = runner.jobs();
+    let (records, computed, crashed) = if options.collect_only {
+        (collect(out, &cells)?, 0, 0)
+    } else {
+        let grid = run_grid(runner, &cells, out, options.force, progress, &describe)?;
+        (grid.records, grid.computed, grid.crashed)
+    };
 
     // Results.
     for r in records.iter().filter(|r| r.solved() && r.repeat == 0) {
@@ -268,12 +300,6 @@ pub fn reproduce(
     let tables = tables_markdown(&experiment, &records, options, &notes);
     write_text(&out.join("tables.md"), &tables)?;
     write_text(&out.join("results.csv"), &results_csv(&records))?;
-    let mut jsonl = String::new();
-    for r in &records {
-        jsonl.push_str(&r.to_json_line());
-        jsonl.push('\n');
-    }
-    write_text(&out.join("results.jsonl"), &jsonl)?;
     write_text(
         &out.join("results.json"),
         &results_json(&records, options, &notes),
@@ -332,6 +358,9 @@ pub fn reproduce(
         summary,
         tables,
         records,
+        computed,
+        crashed,
+        jobs,
         failed_executions,
         report: page,
     })
@@ -447,7 +476,12 @@ fn experiment(
         time_limit: options.time_limit.as_secs_f64(),
         repeat: options.repeat as usize,
         seed: options.seed,
-        machine: machine(),
+        // Parallel timings are noisier: the report says how many ran at once.
+        machine: format!(
+            "{}; {} run(s) at once",
+            machine(),
+            options.children.as_ref().map_or(1, |c| c.jobs.max(1))
+        ),
         versions: format!(
             "demoplan {}; Fast Downward {}",
             env!("CARGO_PKG_VERSION"),

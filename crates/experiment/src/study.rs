@@ -2,9 +2,9 @@
 //!
 //! The grid is every seed x hands x distractors x height x towers x grouping x
 //! (operators without effects dropped, and kept too when asked) x planner x level,
-//! where the levels are priority 1, the full domain and Algorithm 1. Results are
-//! appended to `results.jsonl` as cells finish; a study run again on the same folder
-//! skips the cells already there.
+//! where the levels are priority 1, the full domain and Algorithm 1. It is a grid
+//! ([`crate::grid`]): each cell writes its result into its run folder as it finishes,
+//! and a study run again on the same folder skips the cells already there.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -15,12 +15,13 @@ use report::{html_escape, Bound, Measure, Ratio};
 use slim::{FastDownward, MemoryProbe};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
+use crate::grid::{collect, run_cell, run_grid, RunLayout, Runner};
 use crate::lab::Lab;
 use crate::output::{condition_fields, create_dir, machine, write_png, write_text};
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
-use crate::record::{read_records_for_append, RunRecord};
+use crate::record::RunRecord;
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
-use crate::{run_cell, run_cells, CellCommand, ExperimentError, Progress, Runner};
+use crate::{CellCommand, ExperimentError, Progress};
 
 /// The most cubes a scene may hold (the cube world's table has room for them).
 pub const MAX_CUBES: usize = 24;
@@ -50,6 +51,11 @@ pub struct StudyOptions {
     /// Run the cells in child processes, several at a time; `None` runs them here,
     /// one after another.
     pub children: Option<CellCommand>,
+    /// Compute every cell again, even those with a result in the folder.
+    pub force: bool,
+    /// Compute nothing: build the report from the results in the folder (a cluster's
+    /// collect job); cells without one are an error naming them.
+    pub collect_only: bool,
 }
 
 /// What a study did.
@@ -59,6 +65,10 @@ pub struct StudyOutcome {
     pub records: Vec<RunRecord>,
     /// Cells computed now (the others were in the results already).
     pub computed: usize,
+    /// Cells whose process crashed now (their records say why).
+    pub crashed: usize,
+    /// Cells computed at once.
+    pub jobs: usize,
     /// Plans that failed the execution check.
     pub failed_executions: usize,
     pub report: PathBuf,
@@ -187,14 +197,7 @@ pub fn study(
     options.check()?;
     let out = &options.out;
     create_dir(out)?;
-    let results = out.join("results.jsonl");
-    let done = read_records_for_append(&results)?;
     let cells = study_grid(options);
-    let known: std::collections::HashSet<&str> = done.iter().map(|r| r.id.as_str()).collect();
-    let computed = cells
-        .iter()
-        .filter(|c| !known.contains(c.id().as_str()))
-        .count();
     let mut lab = Lab::new(
         options.params.clone(),
         options.fast_downward.clone(),
@@ -214,7 +217,13 @@ pub fn study(
         Some(command) => Runner::Children(command),
         None => Runner::InProcess(&mut lab),
     };
-    let records = run_cells(runner, &cells, &done, Some(&results), progress, &describe)?;
+    let jobs = runner.jobs();
+    let (records, computed, crashed) = if options.collect_only {
+        (collect(out, &cells)?, 0, 0)
+    } else {
+        let grid = run_grid(runner, &cells, out, options.force, progress, &describe)?;
+        (grid.records, grid.computed, grid.crashed)
+    };
 
     write_text(&out.join("study.json"), &study_json(options, cells.len()))?;
     let mut runs = format!("{RUNS_HEADER},levels_tried\n");
@@ -246,14 +255,22 @@ pub fn study(
     Ok(StudyOutcome {
         records,
         computed,
+        crashed,
+        jobs,
         failed_executions,
         report: page,
     })
 }
 
-/// Computes one cell of the study, by id, in this process: what each child process of
-/// a study run with [`StudyOptions::children`] does. Algorithm 1 cells reuse the runs
-/// already in the study's results.
+/// The study's cells, in their order, once its options are checked (`--list-cells`).
+pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError> {
+    options.check()?;
+    Ok(study_grid(options))
+}
+
+/// Computes one cell of the study, by id, in this process, into its run folder: what
+/// each child process of a study run with [`StudyOptions::children`] (or a Slurm array
+/// task) does. Algorithm 1 cells reuse the runs already in the study's folder.
 pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, ExperimentError> {
     options.check()?;
     let cells = study_grid(options);
@@ -263,7 +280,13 @@ pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, Experim
         options.memory,
         options.memory_limit,
     );
-    run_cell(&mut lab, &cells, id, &options.out.join("results.jsonl"))
+    run_cell(
+        &mut lab,
+        &cells,
+        id,
+        &RunLayout::new(&options.out),
+        options.force,
+    )
 }
 
 fn study_json(options: &StudyOptions, cells: usize) -> String {
@@ -284,7 +307,7 @@ fn study_json(options: &StudyOptions, cells: usize) -> String {
         "time_limit_s": options.time_limit.as_secs_f64(),
         "with_fd": options.fast_downward.is_some(),
         "cells": cells,
-        "jobs": options.children.as_ref().map_or(1, |c| c.jobs),
+        "jobs": options.children.as_ref().map_or(1, |c| c.jobs.max(1)),
         "machine": machine(),
     });
     let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
@@ -498,7 +521,11 @@ fn report_page(
             "dropped"
         },
         report::format_limit(options.time_limit.as_secs_f64()),
-        html_escape(&machine())
+        html_escape(&format!(
+            "{}; {} run(s) at once",
+            machine(),
+            options.children.as_ref().map_or(1, |c| c.jobs.max(1))
+        ))
     );
     s.push_str(
         "<p><code>ratio_p1</code> is the full domain's time over priority 1's, \

@@ -20,10 +20,11 @@ pub mod validate;
 
 use crate::cli::Command;
 use crate::diagnostic::Failure;
+use crate::Invocation;
 use slim::ExitCode;
 
 /// Runs a parsed command.
-pub fn run(command: Command) -> Result<ExitCode, Failure> {
+pub fn run(command: Command, this: &Invocation) -> Result<ExitCode, Failure> {
     match command {
         Command::Check(args) => check::run(args),
         Command::Fmt(args) => fmt::run(args),
@@ -41,8 +42,8 @@ pub fn run(command: Command) -> Result<ExitCode, Failure> {
         Command::Domain(args) => library::domain(args),
         Command::Problem(args) => library::problem(args),
         Command::Solve(args) => solve::run(args),
-        Command::Reproduce(args) => reproduce::run(args),
-        Command::Study(args) => study::run(args),
+        Command::Reproduce(args) => reproduce::run(args, this),
+        Command::Study(args) => study::run(args, this),
         Command::Execute(args) => execute::run(args),
     }
 }

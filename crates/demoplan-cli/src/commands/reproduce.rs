@@ -4,10 +4,13 @@
 
 use slim::FastDownward;
 
-use crate::cli::{FastDownwardArgs, ReproduceArgs};
+use std::path::Path;
+
+use crate::cli::{FastDownwardArgs, GridArgs, ReproduceArgs, SlurmArgs};
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::progress::Bar;
+use crate::Invocation;
 use slim::ExitCode;
 
 /// An experiment's error as a failure with its exit code
@@ -34,45 +37,104 @@ pub fn fast_downward(args: &FastDownwardArgs) -> Result<Option<FastDownward>, Fa
         .map_err(|e| Failure::plain(ExitCode::USAGE, e))
 }
 
-/// With `jobs` above 1, how the grid's cells run in child processes: this program
-/// again, with this command line, `--cell ID` and the memory limit this process resolved
-/// (the last `--memory-limit` wins: `auto` again in a child would count its siblings).
+/// The grid's cells at once: `-j N`, else the number of cores.
+pub fn jobs(grid: &GridArgs) -> usize {
+    grid.jobs.map_or_else(
+        || std::thread::available_parallelism().map_or(1, usize::from),
+        |n| n as usize,
+    )
+}
+
+/// How the grid's cells run, each in a child process: `this` (the command that runs
+/// demoplan again) with the grid's command line `argv`, `--cell ID` and the memory limit
+/// this process resolved (the last `--memory-limit` wins: `auto` again in a child would
+/// count its siblings).
 pub fn cell_command(
     jobs: usize,
     memory_limit: Option<u64>,
-) -> Result<Option<experiment::CellCommand>, Failure> {
-    if jobs <= 1 {
-        return Ok(None);
-    }
+    this: &Invocation,
+) -> experiment::CellCommand {
     let bytes = memory_limit.map_or("infinity".to_string(), |b| b.to_string());
-    let program = std::env::current_exe().map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!("-j {jobs}: cannot find this program to run its cells: {e}"),
-        )
-    })?;
-    Ok(Some(experiment::CellCommand {
-        program,
-        args: std::env::args_os()
-            .skip(1)
+    experiment::CellCommand {
+        program: this.program[0].clone().into(),
+        args: (this.program[1..].iter().chain(&this.argv).cloned())
             .chain(["--memory-limit".into(), bytes.into()])
             .collect(),
         jobs,
-    }))
+    }
 }
 
-/// A child process's cell record on standard output, as [`experiment::CellCommand`]
-/// reads it.
-pub fn print_cell(
-    record: Result<experiment::RunRecord, experiment::ExperimentError>,
+/// The memory limit per cell: `--memory-limit`, where `auto` on a grid written for
+/// Slurm is [`experiment::grid::slurm::AUTO_MEMORY_LIMIT`].
+pub fn grid_memory_limit(
+    text: &str,
+    jobs: usize,
+    slurm: &SlurmArgs,
+) -> Result<Option<u64>, Failure> {
+    match slurm.slurm {
+        Some(_) if !slurm.collect && text.trim().eq_ignore_ascii_case("auto") => {
+            Ok(Some(experiment::grid::slurm::AUTO_MEMORY_LIMIT))
+        }
+        _ => parse_run_memory_limit(text, jobs),
+    }
+}
+
+/// `--slurm DIR`: writes the grid `cells` as Slurm jobs into DIR and runs nothing.
+pub fn write_slurm(
+    args: &SlurmArgs,
+    dir: &Path,
+    name: &str,
+    cells: Result<Vec<experiment::Cell>, experiment::ExperimentError>,
+    memory_limit: Option<u64>,
+    this: &Invocation,
 ) -> Result<ExitCode, Failure> {
-    println!("{}", record.map_err(experiment_failure)?.to_json_line());
+    use experiment::grid::slurm::{write_job, GridCommand, SlurmOptions};
+    let here = |e: std::io::Error| Failure::plain(ExitCode::USAGE, format!("--slurm: {e}"));
+    let command = GridCommand {
+        program: this.program[0].clone().into(),
+        args: (this.program[1..].iter().chain(&this.argv).cloned()).collect(),
+        workdir: std::env::current_dir().map_err(here)?,
+        name: name.into(),
+        memory_limit,
+    };
+    let options = SlurmOptions {
+        partition: args.slurm_partition.clone(),
+        cpus_per_task: args.slurm_cpus_per_task,
+        mem: args.slurm_mem,
+        time: args.slurm_time,
+        cells_per_task: args.slurm_cells_per_task.map(|n| n as usize),
+        max_running: args.slurm_max_running as usize,
+        seed: args.slurm_seed,
+        sbatch: args.slurm_sbatch.clone(),
+        ..SlurmOptions::new(dir)
+    };
+    let job = cells.and_then(|cells| write_job(&cells, &command, &options));
+    print!("{}", job.map_err(experiment_failure)?.summary());
     Ok(ExitCode::SUCCESS)
 }
 
-pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
+/// What a grid command does before its grid: `--list-cells` prints the cells, `--cell
+/// ID` computes one (printing its record as one JSON line); `None` runs the grid.
+pub fn cell_or_list(
+    grid: &GridArgs,
+    cells: impl FnOnce() -> Result<Vec<experiment::Cell>, experiment::ExperimentError>,
+    cell: impl FnOnce(&str) -> Result<experiment::RunRecord, experiment::ExperimentError>,
+) -> Option<Result<ExitCode, Failure>> {
+    let print = |text: Result<String, experiment::ExperimentError>| {
+        print!("{}", text.map_err(experiment_failure)?);
+        Ok(ExitCode::SUCCESS)
+    };
+    if grid.list_cells {
+        return Some(print(cells().map(|c| experiment::cell_list(&c))));
+    }
+    let id = grid.cell.as_deref()?;
+    Some(print(cell(id).map(|r| r.to_json_line() + "\n")))
+}
+
+pub fn run(args: ReproduceArgs, this: &Invocation) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, args.jobs as usize)?;
+    let jobs = jobs(&args.grid);
+    let memory_limit = grid_memory_limit(&args.limits.memory_limit, jobs, &args.slurm)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
         time_limit: time_limit(args.limits.time_limit.as_deref())?,
@@ -84,10 +146,19 @@ pub fn run(args: ReproduceArgs) -> Result<ExitCode, Failure> {
         hands: args.hands as usize,
         memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
-        children: cell_command(args.jobs as usize, memory_limit)?,
+        children: Some(cell_command(jobs, memory_limit, this)),
+        force: args.grid.force,
+        collect_only: args.slurm.collect,
     };
-    if let Some(id) = &args.cell {
-        return print_cell(experiment::reproduce_cell(&options, id));
+    let cells = || experiment::reproduce_cells(&options);
+    if let Some(done) = cell_or_list(&args.grid, cells, |id| {
+        experiment::reproduce_cell(&options, id)
+    }) {
+        return done;
+    }
+    if let (Some(dir), false) = (&args.slurm.slurm, args.slurm.collect) {
+        let cells = experiment::reproduce_cells(&options);
+        return write_slurm(&args.slurm, dir, "reproduce", cells, memory_limit, this);
     }
     let bar = Bar::new();
     let result = experiment::reproduce(&options, &mut |p| bar.update(p));

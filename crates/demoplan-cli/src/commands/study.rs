@@ -3,13 +3,14 @@
 //! to an exit code.
 
 use crate::cli::StudyArgs;
-use crate::commands::plan::parse_run_memory_limit;
 use crate::commands::reproduce::{
-    cell_command, experiment_failure, fast_downward, print_cell, time_limit,
+    cell_command, cell_or_list, experiment_failure, fast_downward, grid_memory_limit, jobs,
+    time_limit, write_slurm,
 };
 use crate::diagnostic::Failure;
 use crate::input;
 use crate::progress::Bar;
+use crate::Invocation;
 use slim::ExitCode;
 
 fn usage(option: &str, message: String) -> Failure {
@@ -26,7 +27,7 @@ fn sizes(option: &str, text: &str) -> Result<Vec<usize>, Failure> {
     experiment::sizes(text).map_err(|e| usage(option, e))
 }
 
-pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
+pub fn run(args: StudyArgs, this: &Invocation) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
     let params = input::sim_params(args.params.as_deref())?;
     let mut activities: Vec<String> = args
@@ -35,11 +36,8 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         .map(|a| a.trim().to_string())
         .collect();
     activities.dedup();
-    let jobs = match args.jobs {
-        Some(n) => n as usize,
-        None => std::thread::available_parallelism().map_or(1, usize::from),
-    };
-    let memory_limit = parse_run_memory_limit(&args.limits.memory_limit, jobs)?;
+    let jobs = jobs(&args.grid);
+    let memory_limit = grid_memory_limit(&args.limits.memory_limit, jobs, &args.slurm)?;
     let options = experiment::StudyOptions {
         out: args.out,
         seeds: numbers("--seeds", &args.seeds)?,
@@ -56,22 +54,25 @@ pub fn run(args: StudyArgs) -> Result<ExitCode, Failure> {
         fast_downward: fast_downward(&args.fast_downward)?,
         memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
-        children: None,
+        children: Some(cell_command(jobs, memory_limit, this)),
+        force: args.grid.force,
+        collect_only: args.slurm.collect,
     };
-    if let Some(id) = &args.cell {
-        return print_cell(experiment::study_cell(&options, id));
+    let cells = || experiment::study_cells(&options);
+    if let Some(done) = cell_or_list(&args.grid, cells, |id| experiment::study_cell(&options, id)) {
+        return done;
     }
-    let options = experiment::StudyOptions {
-        children: cell_command(jobs, memory_limit)?,
-        ..options
-    };
+    if let (Some(dir), false) = (&args.slurm.slurm, args.slurm.collect) {
+        let cells = experiment::study_cells(&options);
+        return write_slurm(&args.slurm, dir, "study", cells, memory_limit, this);
+    }
     let bar = Bar::new();
     let result = experiment::study(&options, &mut |p| bar.update(p));
     bar.finish();
     let done = result.map_err(experiment_failure)?;
-    print!(
-        "{}",
-        done.closing_line(&options.out, jobs, started.elapsed())
-    );
+    print!("{}", done.closing_line(&options.out, started.elapsed()));
+    if let Some(failures) = done.failures() {
+        eprint!("{failures}");
+    }
     Ok(done.exit_code())
 }

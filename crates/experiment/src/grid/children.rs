@@ -1,10 +1,10 @@
 //! Cells in child processes, several at a time.
 //!
 //! Each cell runs as `PROGRAM ARGS... --cell ID`: the grid's own command again, asked
-//! for one cell. The child computes it in-process and prints its record as one JSON
-//! line on standard output. A process per cell gives each run its own memory counter
-//! (peak heap is counted per process) and its own limits, and a crash loses one cell,
-//! whose record then says why.
+//! for one cell. The child computes it in-process and writes its record into its run
+//! folder ([`super::run_cell`]). A process per cell gives each run its own memory
+//! counter (peak heap is counted per process) and its own limits, and a crash loses one
+//! cell, whose folder then gets a record saying why ([`RunRecord::crashed`]).
 
 use std::ffi::OsString;
 use std::io::Read;
@@ -14,6 +14,7 @@ use std::sync::mpsc;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
+use super::RunLayout;
 use crate::cell::Cell;
 use crate::record::RunRecord;
 use crate::ExperimentError;
@@ -23,7 +24,7 @@ use crate::ExperimentError;
 pub struct CellCommand {
     /// The executable (the CLI passes its own).
     pub program: PathBuf,
-    /// The grid's arguments; `--cell ID` is appended.
+    /// The grid's arguments (its output folder among them); `--cell ID` is appended.
     pub args: Vec<OsString>,
     /// Children at once (at least 1).
     pub jobs: usize,
@@ -32,7 +33,7 @@ pub struct CellCommand {
 /// What the workers tell the thread that records results.
 pub(crate) enum Event {
     Started(usize),
-    Finished(usize, Box<RunRecord>),
+    Finished(Box<RunRecord>),
 }
 
 /// How much longer than its limit a child may take before it is killed: its limit
@@ -50,6 +51,7 @@ impl CellCommand {
         &self,
         cells: &[Cell],
         which: &[usize],
+        layout: &RunLayout,
         on_event: &mut dyn FnMut(Event) -> Result<(), ExperimentError>,
     ) -> Result<(), ExperimentError> {
         let queue = Mutex::new(which.iter().copied());
@@ -68,8 +70,8 @@ impl CellCommand {
                     if tx.send(Event::Started(i)).is_err() {
                         break;
                     }
-                    let record = self.run_one(&cells[i]);
-                    if tx.send(Event::Finished(i, Box::new(record))).is_err() {
+                    let record = self.run_one(&cells[i], i + 1, layout);
+                    if tx.send(Event::Finished(Box::new(record))).is_err() {
                         break;
                     }
                 });
@@ -89,9 +91,25 @@ impl CellCommand {
         })
     }
 
-    /// One cell in a child; a child that fails, hangs or prints no record gives an
-    /// error record saying so.
-    fn run_one(&self, cell: &Cell) -> RunRecord {
+    /// One cell in a child, which writes its record into the cell's folder. A child
+    /// that fails, hangs or leaves no record of its cell gives a record of the crash,
+    /// written there in its place (the result of a failing write is the record alone).
+    fn run_one(&self, cell: &Cell, task: usize, layout: &RunLayout) -> RunRecord {
+        let outcome = self.spawn_one(cell, task, layout);
+        match outcome {
+            Ok(record) => record,
+            Err(message) => {
+                let record = RunRecord {
+                    crashed: true,
+                    ..RunRecord::failed(cell, message)
+                };
+                let _ = super::write_result(layout, task, &record, cell.time_limit.as_secs_f64());
+                record
+            }
+        }
+    }
+
+    fn spawn_one(&self, cell: &Cell, task: usize, layout: &RunLayout) -> Result<RunRecord, String> {
         let id = cell.id();
         let mut command = Command::new(&self.program);
         command
@@ -99,51 +117,32 @@ impl CellCommand {
             .arg("--cell")
             .arg(&id)
             .stdin(Stdio::null())
-            .stdout(Stdio::piped())
+            .stdout(Stdio::null())
             .stderr(Stdio::piped());
-        let mut child = match command.spawn() {
-            Ok(child) => child,
-            Err(e) => {
-                return RunRecord::failed(
-                    cell,
-                    format!("could not start {}: {e}", self.program.display()),
-                )
-            }
-        };
-        let (status, stdout, stderr) = match wait(&mut child, watchdog(cell)) {
-            Ok(done) => done,
-            Err(message) => return RunRecord::failed(cell, message),
-        };
-        let line = stdout.lines().rev().find(|l| !l.trim().is_empty());
-        let parsed = line.map(serde_json::from_str::<RunRecord>);
-        match (status.success(), parsed) {
-            (true, Some(Ok(record))) if record.id == id => record,
-            (true, Some(Ok(record))) => RunRecord::failed(
-                cell,
-                format!("the child computed cell {} instead", record.id),
-            ),
-            (true, Some(Err(e))) => {
-                RunRecord::failed(cell, format!("the child printed no record: {e}"))
-            }
-            (true, None) => RunRecord::failed(cell, "the child printed nothing".to_string()),
-            (false, _) => {
-                let tail: Vec<&str> = stderr.lines().rev().take(5).collect();
-                let tail: Vec<&str> = tail.into_iter().rev().collect();
-                RunRecord::failed(
-                    cell,
-                    format!("the child process failed ({status}): {}", tail.join(" / ")),
-                )
-            }
+        let mut child = command
+            .spawn()
+            .map_err(|e| format!("could not start {}: {e}", self.program.display()))?;
+        let (status, stderr) = wait(&mut child, watchdog(cell))?;
+        if !status.success() {
+            let tail: Vec<&str> = stderr.lines().rev().take(5).collect();
+            let tail: Vec<&str> = tail.into_iter().rev().collect();
+            return Err(format!(
+                "the child process failed ({status}): {}",
+                tail.join(" / ")
+            ));
         }
+        layout.read_record(task, cell).ok_or_else(|| {
+            format!(
+                "the child process ended without writing the record of cell {id} into {}",
+                layout.run_dir(task).display()
+            )
+        })
     }
 }
 
-/// Waits for `child` (reading its output as it comes, so that a full pipe never blocks
-/// it), killing it after `limit`.
-fn wait(
-    child: &mut Child,
-    limit: Duration,
-) -> Result<(std::process::ExitStatus, String, String), String> {
+/// Waits for `child` (reading its standard error as it comes, so that a full pipe never
+/// blocks it), killing it after `limit`.
+fn wait(child: &mut Child, limit: Duration) -> Result<(std::process::ExitStatus, String), String> {
     let reader = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
             let mut text = String::new();
@@ -155,12 +154,6 @@ fn wait(
             text
         })
     };
-    let out = reader(
-        child
-            .stdout
-            .take()
-            .map(|p| Box::new(p) as Box<dyn Read + Send>),
-    );
     let err = reader(
         child
             .stderr
@@ -183,7 +176,6 @@ fn wait(
             Err(e) => return Err(format!("could not wait for the child process: {e}")),
         }
     };
-    let stdout = out.join().unwrap_or_default();
     let stderr = err.join().unwrap_or_default();
-    Ok((status, stdout, stderr))
+    Ok((status, stderr))
 }

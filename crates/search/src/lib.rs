@@ -15,6 +15,9 @@
 //! - [`astar`]: eager A* with reopening, returning a [`SearchResult`] (an [`Outcome`] and
 //!   Fast Downward-style [`Statistics`]) under [`SearchLimits`], reporting each new
 //!   f-layer to an optional observer;
+//! - partial-order reduction: [`PruningConfig`] (`pruning=atom_centric_stubborn_sets()`,
+//!   `limited_pruning(...)`) built into a [`Pruning`] that [`astar_with_pruning`] applies
+//!   to each expansion, with what it pruned in [`PruningStatistics`];
 //! - [`parse_search`] and [`alias`]: Fast Downward-style search strings
 //!   (`astar(hmax())`, `seq-opt-lmcut`), and [`search`] to run one;
 //! - [`replay`]: applies a plan to the initial state, checking every step.

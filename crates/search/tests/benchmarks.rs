@@ -179,11 +179,32 @@ fn stubborn_sets_prune_as_fast_downward_does() {
     let stubborn = |options: &str| format!("pruning=atom_centric_stubborn_sets({options})");
     let cases = [
         ("gripper", "prob02", "blind()", stubborn(""), 1831, 7114),
-        ("logistics00", "probLOGISTICS-4-0", "blind()", stubborn(""), 11857, 46110),
+        (
+            "logistics00",
+            "probLOGISTICS-4-0",
+            "blind()",
+            stubborn(""),
+            11857,
+            46110,
+        ),
         ("depot", "p01", "lmcut()", stubborn(""), 14, 79),
         ("rovers", "p03", "lmcut()", stubborn(""), 22, 109),
-        ("satellite", "p06-pfile6", "lmcut()", stubborn(""), 197, 2598),
-        ("elevators-opt08-strips", "p02", "lmcut()", stubborn(""), 146, 2742),
+        (
+            "satellite",
+            "p06-pfile6",
+            "lmcut()",
+            stubborn(""),
+            197,
+            2598,
+        ),
+        (
+            "elevators-opt08-strips",
+            "p02",
+            "lmcut()",
+            stubborn(""),
+            146,
+            2742,
+        ),
         (
             "depot",
             "p01",

@@ -22,6 +22,8 @@ pub enum PlanInput<'a> {
         domain: &'a pddl::Domain,
         /// The problem.
         problem: &'a pddl::Problem,
+        /// The translator's options beyond Fast Downward's translation.
+        options: translate::TranslateOptions,
     },
     /// A finite-domain task (Fast Downward's `output.sas`, or one translated before),
     /// searched as it is.
@@ -65,8 +67,12 @@ pub fn plan_logged(
     let translated;
     let task = match input {
         PlanInput::Task(task) => task,
-        PlanInput::Pddl { domain, problem } => {
-            let translation = translate::translate_within(domain, problem, limits)?;
+        PlanInput::Pddl {
+            domain,
+            problem,
+            options,
+        } => {
+            let translation = translate::translate_with_options(domain, problem, limits, &options)?;
             for line in translation.log().lines() {
                 log(line);
             }
@@ -403,6 +409,7 @@ mod tests {
         let input = PlanInput::Pddl {
             domain: &domain,
             problem: &problem,
+            options: translate::TranslateOptions::default(),
         };
         let result = plan_logged(input, &config, limits, start, &mut |l| {
             lines.push(l.to_string())

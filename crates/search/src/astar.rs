@@ -744,6 +744,39 @@ pub(crate) mod tests {
         );
     }
 
+    #[test]
+    fn pruning_is_counted_and_stopped_by_the_limits() {
+        use crate::pruning::{PruningConfig, StubbornSetsConfig};
+        let task = line(500);
+        let config = PruningConfig::AtomCentricStubbornSets(StubbornSetsConfig::default());
+        let mut pruning = config.build(&task).unwrap();
+        let result = astar_with_pruning(
+            &task,
+            &mut Blind::new(&task),
+            Some(&mut pruning),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 499));
+        // A line is one variable: every applicable move interferes with the others, so
+        // nothing is pruned, and every successor counted is generated.
+        let p = result.statistics.pruning.unwrap();
+        assert_eq!(p.successors_after, result.statistics.generated);
+        assert_eq!(p.successors_after, p.successors_before);
+
+        let past = SearchLimits {
+            deadline: Some(Instant::now()),
+            ..SearchLimits::default()
+        };
+        let mut pruning = config.build(&task).unwrap();
+        let result =
+            astar_with_pruning(&task, &mut Blind::new(&task), Some(&mut pruning), &past, None)
+                .unwrap();
+        assert_eq!(result.outcome, Outcome::TimeLimit);
+        assert_eq!(result.statistics.pruning.unwrap().successors_before, 0);
+    }
+
     /// A heuristic that takes 10 ms per state, as LM-cut does on the largest tasks.
     struct Slow;
 

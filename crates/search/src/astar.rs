@@ -770,9 +770,14 @@ pub(crate) mod tests {
             ..SearchLimits::default()
         };
         let mut pruning = config.build(&task).unwrap();
-        let result =
-            astar_with_pruning(&task, &mut Blind::new(&task), Some(&mut pruning), &past, None)
-                .unwrap();
+        let result = astar_with_pruning(
+            &task,
+            &mut Blind::new(&task),
+            Some(&mut pruning),
+            &past,
+            None,
+        )
+        .unwrap();
         assert_eq!(result.outcome, Outcome::TimeLimit);
         assert_eq!(result.statistics.pruning.unwrap().successors_before, 0);
     }

@@ -175,7 +175,7 @@ pub struct PlanArgs {
     /// `[DOMAIN] PROBLEM`, or `FILE.sas`.
     #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
     pub files: Vec<PathBuf>,
-    /// The search, e.g. `astar(blind())`, `astar(hmax())`.
+    /// The search, e.g. `astar(blind())`, `astar(lmcut(), pruning=atom_centric_stubborn_sets())`.
     #[arg(long, value_name = "SEARCH", required_unless_present = "alias")]
     pub search: Option<String>,
     /// A named configuration, e.g. `seq-opt-lmcut`.

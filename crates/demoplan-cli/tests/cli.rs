@@ -547,6 +547,82 @@ fn stats_json_reports_the_solved_run() {
 }
 
 #[test]
+fn pruning_prints_fast_downwards_lines_and_goes_into_stats_json() {
+    let tmp = tempdir("pruning");
+    let out = demoplan()
+        .current_dir(&tmp)
+        .arg("plan")
+        .arg(workspace().join("examples/cubes/tower-3.pddl"))
+        .args([
+            "--search",
+            "astar(lmcut(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), \
+             min_required_pruning_ratio=0.99, expansions_before_checking_pruning_ratio=2))",
+            "--stats-json",
+            "stats.json",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+    let log = stdout_text(&out);
+    for line in [
+        "pruning method: atom-centric stubborn sets",
+        "pruning method: limited",
+        "Pruning ratio after 2 calls: ",
+        "-- pruning ratio is lower than minimum pruning ratio (0.990000) -> switching off pruning",
+        "total successors before pruning: ",
+        "total successors after pruning: ",
+        "Pruning ratio: ",
+        "Plan cost: 6",
+    ] {
+        assert!(log.contains(line), "{line} missing in {log}");
+    }
+    let before = logged_number(&log, "total successors before pruning: ").unwrap();
+    let after = logged_number(&log, "total successors after pruning: ").unwrap();
+    assert_eq!(Some(after), logged_number(&log, "Generated "));
+    let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+    for field in [
+        format!("\"successors_before\": {before}"),
+        format!("\"successors_after\": {after}"),
+        "\"checked_after_calls\": 2".to_string(),
+        "\"switched_off\": true".to_string(),
+    ] {
+        assert!(json.contains(&field), "{field} missing in {json}");
+    }
+}
+
+#[test]
+fn bad_pruning_options_are_named_with_exit_33() {
+    let tmp = tempdir("bad-pruning");
+    let problem = workspace().join("examples/cubes/tower-3.pddl");
+    for (search, named) in [
+        (
+            "astar(blind(), pruning=atom_centric_stubborn_sets(atom_selection_strategy=best))",
+            "`atom_selection_strategy` must be one of fast_downward, quick_skip, static_small, dynamic_small, not `best`",
+        ),
+        (
+            "astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), min_required_pruning_ratio=2))",
+            "`min_required_pruning_ratio` must be a number from 0 to 1, not `2`",
+        ),
+        (
+            "astar(blind(), pruning=atom_centric_stubborn_sets(use_sibling=true))",
+            "does not take the argument `use_sibling=`",
+        ),
+    ] {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .arg(&problem)
+            .args(["--search", search])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(33), "{}", transcript(&out));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(named), "{named} missing in {stderr}");
+    }
+    assert!(!tmp.join("sas_plan").exists());
+}
+
+#[test]
 fn bad_search_strings_and_limits_are_rejected_before_any_work() {
     let tmp = tempdir("bad-search");
     let problem = workspace().join("examples/cubes/tower-3.pddl");

@@ -93,6 +93,7 @@ fn plan_texts(
     let input = slim::PlanInput::Pddl {
         domain: &domain,
         problem: &problem,
+        options: Default::default(),
     };
     let logged = slim::plan_logged(input, &config, limits, start, &mut |_| {})
         .map_err(|e| Failure::plain(e.exit_code(), e.message(problem_path)))?;

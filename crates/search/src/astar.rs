@@ -7,6 +7,7 @@ use task::{OpId, Task, TaskError};
 use crate::heuristic::Heuristic;
 use crate::open_list::OpenList;
 use crate::plan::Plan;
+use crate::pruning::{Pruning, PruningStatistics};
 use crate::segmented::SegmentedVec;
 use crate::state::{StateId, StatePacker, StateRegistry};
 use crate::successor::SuccessorGenerator;
@@ -102,6 +103,8 @@ pub struct Statistics {
     pub search_time: Duration,
     /// Distinct states registered.
     pub registered_states: u64,
+    /// What partial-order reduction did; `None` without pruning (`null()`).
+    pub pruning: Option<PruningStatistics>,
 }
 
 /// How a search ended.
@@ -368,6 +371,23 @@ pub fn astar<H: Heuristic + ?Sized>(
     task: &Task,
     heuristic: &mut H,
     limits: &SearchLimits,
+    observer: Option<&mut dyn FnMut(Progress)>,
+) -> Result<SearchResult, SearchError> {
+    astar_with_pruning(task, heuristic, None, limits, observer)
+}
+
+/// [`astar`] with partial-order reduction: `pruning` (built for `task`, see
+/// [`crate::PruningConfig::build`]) keeps a subset of the applicable operators of each
+/// expanded non-goal state, and only those are generated (and counted as generated, as
+/// in Fast Downward). With a strong stubborn set method the search stays optimal. Each
+/// pruning call counts towards the limit checks as an evaluation does, so that pruning
+/// expensive on a large task cannot let the time limit slip; what pruning did is in
+/// [`Statistics::pruning`].
+pub fn astar_with_pruning<H: Heuristic + ?Sized>(
+    task: &Task,
+    heuristic: &mut H,
+    mut pruning: Option<&mut Pruning>,
+    limits: &SearchLimits,
     mut observer: Option<&mut dyn FnMut(Progress)>,
 ) -> Result<SearchResult, SearchError> {
     let start = Instant::now();
@@ -390,9 +410,13 @@ pub fn astar<H: Heuristic + ?Sized>(
     let mut child_packed = vec![0u64; words];
     let mut applicable: Vec<OpId> = Vec::new();
 
-    let finish = |outcome: Outcome, mut stats: Statistics, registry: &StateRegistry| {
+    let finish = |outcome: Outcome,
+                  mut stats: Statistics,
+                  registry: &StateRegistry,
+                  pruning: &Option<&mut Pruning>| {
         stats.search_time = start.elapsed();
         stats.registered_states = registry.len() as u64;
+        stats.pruning = pruning.as_ref().map(|p| p.statistics());
         Ok(SearchResult {
             outcome,
             statistics: stats,
@@ -401,7 +425,7 @@ pub fn astar<H: Heuristic + ?Sized>(
 
     packer.pack(&task.initial_state, &mut child_packed);
     let Some((init, _)) = registry.insert(&child_packed) else {
-        return finish(Outcome::MemoryLimit, stats, &registry);
+        return finish(Outcome::MemoryLimit, stats, &registry, &pruning);
     };
     stats.evaluated = 1;
     stats.initial_h = heuristic.evaluate(&task.initial_state);
@@ -409,7 +433,7 @@ pub fn astar<H: Heuristic + ?Sized>(
         None => {
             stats.dead_ends = 1;
             info.push(0, 0, init, NO_OP, Status::DeadEnd);
-            return finish(Outcome::Unsolvable, stats, &registry);
+            return finish(Outcome::Unsolvable, stats, &registry, &pruning);
         }
         Some(h) => {
             let h = clamp_h(h);
@@ -422,10 +446,10 @@ pub fn astar<H: Heuristic + ?Sized>(
     let mut limit_check = LimitCheck::new();
     loop {
         if let Some(outcome) = limit_reached(&mut limit_check, limits, &registry, &info, &open) {
-            return finish(outcome, stats, &registry);
+            return finish(outcome, stats, &registry, &pruning);
         }
         let Some((f, h, id)) = open.pop() else {
-            return finish(Outcome::Unsolvable, stats, &registry);
+            return finish(Outcome::Unsolvable, stats, &registry, &pruning);
         };
         let node = *info.node(id);
         if node.status() != Status::Open || u64::from(node.g) + h != f {
@@ -454,10 +478,17 @@ pub fn astar<H: Heuristic + ?Sized>(
                 operators: info.extract_plan(id),
                 cost: u64::from(node.g),
             };
-            return finish(Outcome::Solved(plan), stats, &registry);
+            return finish(Outcome::Solved(plan), stats, &registry, &pruning);
         }
         let g = node.g;
         generator.applicable(&state, &mut applicable);
+        if let Some(p) = pruning.as_mut() {
+            p.prune(&state, &mut applicable);
+            if let Some(outcome) = limit_reached(&mut limit_check, limits, &registry, &info, &open)
+            {
+                return finish(outcome, stats, &registry, &pruning);
+            }
+        }
         for &op in &applicable {
             stats.generated += 1;
             let o = op.index();
@@ -465,13 +496,13 @@ pub fn astar<H: Heuristic + ?Sized>(
             ops.apply_packed(o, &mut child_packed);
             let child_g = child_g(g, ops.cost[o])?;
             let Some((child_id, is_new)) = registry.insert(&child_packed) else {
-                return finish(Outcome::MemoryLimit, stats, &registry);
+                return finish(Outcome::MemoryLimit, stats, &registry, &pruning);
             };
             if is_new {
                 if let Some(outcome) =
                     limit_reached(&mut limit_check, limits, &registry, &info, &open)
                 {
-                    return finish(outcome, stats, &registry);
+                    return finish(outcome, stats, &registry, &pruning);
                 }
                 child.copy_from_slice(&state);
                 ops.apply_unpacked(o, &mut child);
@@ -753,6 +784,44 @@ pub(crate) mod tests {
                 .outcome,
             Outcome::MemoryLimit
         );
+    }
+
+    #[test]
+    fn pruning_is_counted_and_stopped_by_the_limits() {
+        use crate::pruning::{PruningConfig, StubbornSetsConfig};
+        let task = line(500);
+        let config = PruningConfig::AtomCentricStubbornSets(StubbornSetsConfig::default());
+        let mut pruning = config.build(&task).unwrap();
+        let result = astar_with_pruning(
+            &task,
+            &mut Blind::new(&task),
+            Some(&mut pruning),
+            &SearchLimits::default(),
+            None,
+        )
+        .unwrap();
+        assert!(matches!(result.outcome, Outcome::Solved(ref p) if p.cost == 499));
+        // A line is one variable: every applicable move interferes with the others, so
+        // nothing is pruned, and every successor counted is generated.
+        let p = result.statistics.pruning.unwrap();
+        assert_eq!(p.successors_after, result.statistics.generated);
+        assert_eq!(p.successors_after, p.successors_before);
+
+        let past = SearchLimits {
+            deadline: Some(Instant::now()),
+            ..SearchLimits::default()
+        };
+        let mut pruning = config.build(&task).unwrap();
+        let result = astar_with_pruning(
+            &task,
+            &mut Blind::new(&task),
+            Some(&mut pruning),
+            &past,
+            None,
+        )
+        .unwrap();
+        assert_eq!(result.outcome, Outcome::TimeLimit);
+        assert_eq!(result.statistics.pruning.unwrap().successors_before, 0);
     }
 
     /// A heuristic that takes 10 ms per state, as LM-cut does on the largest tasks.

@@ -18,6 +18,9 @@ use crate::hmax::HMax;
 use crate::ipdb::{hill_climbing, ipdb, IpdbConfig};
 use crate::lmcut::LmCut;
 use crate::pdb::build_collection_within;
+use crate::pruning::{
+    AtomSelectionStrategy, LimitedPruningConfig, PruningConfig, Ratio, StubbornSetsConfig,
+};
 
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
@@ -87,6 +90,8 @@ pub struct SearchConfig {
     pub engine: Engine,
     /// The heuristic it is guided by.
     pub heuristic: HeuristicConfig,
+    /// Partial-order reduction (`pruning=...`; default `null()`, none).
+    pub pruning: PruningConfig,
 }
 
 /// A search engine.
@@ -254,8 +259,12 @@ impl fmt::Display for SearchConfig {
     /// The canonical search string: `astar(hmax())`, `astar(ipdb(max_time=30))`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.engine {
-            Engine::AStar => write!(f, "astar({})", self.heuristic),
+            Engine::AStar => write!(f, "astar({}", self.heuristic)?,
         }
+        if self.pruning != PruningConfig::Null {
+            write!(f, ", pruning={}", self.pruning)?;
+        }
+        write!(f, ")")
     }
 }
 
@@ -297,6 +306,55 @@ impl fmt::Display for HeuristicConfig {
                 write!(f, ")")
             }
             other => write!(f, "{}()", other.name()),
+        }
+    }
+}
+
+impl fmt::Display for PruningConfig {
+    /// The canonical form: `atom_centric_stubborn_sets()`,
+    /// `limited_pruning(pruning=atom_centric_stubborn_sets())` (options at their defaults
+    /// left out).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PruningConfig::Null => write!(f, "null()"),
+            PruningConfig::AtomCentricStubbornSets(config) => {
+                let default = StubbornSetsConfig::default();
+                let mut options = Vec::new();
+                if config.use_sibling_shortcut != default.use_sibling_shortcut {
+                    options.push(format!(
+                        "use_sibling_shortcut={}",
+                        config.use_sibling_shortcut
+                    ));
+                }
+                if config.atom_selection_strategy != default.atom_selection_strategy {
+                    options.push(format!(
+                        "atom_selection_strategy={}",
+                        config.atom_selection_strategy.name()
+                    ));
+                }
+                write!(f, "atom_centric_stubborn_sets({})", options.join(", "))
+            }
+            PruningConfig::Limited(config) => {
+                let default = LimitedPruningConfig::new(PruningConfig::Null);
+                write!(f, "limited_pruning(pruning={}", config.pruning)?;
+                if config.min_required_pruning_ratio != default.min_required_pruning_ratio {
+                    write!(
+                        f,
+                        ", min_required_pruning_ratio={}",
+                        config.min_required_pruning_ratio.0
+                    )?;
+                }
+                let n = config.expansions_before_checking_pruning_ratio;
+                if n != default.expansions_before_checking_pruning_ratio {
+                    let n = if n == u64::MAX {
+                        "infinity".to_string()
+                    } else {
+                        n.to_string()
+                    };
+                    write!(f, ", expansions_before_checking_pruning_ratio={n}")?;
+                }
+                write!(f, ")")
+            }
         }
     }
 }
@@ -440,18 +498,32 @@ pub fn parse_search(s: &str) -> Result<SearchConfig, ConfigError> {
 fn interpret_search(term: &Term) -> Result<SearchConfig, ConfigError> {
     match term.name.as_str() {
         "astar" => {
-            let mut args = Args::new(term, &["eval"])?;
+            // `pruning` only by keyword: Fast Downward's second positional parameter is
+            // another (`lazy_evaluator`).
+            if let Some(i) = term.args.iter().skip(1).position(|a| a.key.is_none()) {
+                return Err(ConfigError::UnexpectedArgument {
+                    function: term.name.clone(),
+                    argument: format!("number {} (positional)", i + 2),
+                });
+            }
+            let mut args = Args::new(term, &["eval", "pruning"])?;
             let eval = args
                 .take("eval")?
                 .ok_or_else(|| ConfigError::MissingArgument {
                     function: term.name.clone(),
                     argument: "eval".into(),
                 })?;
+            let pruning = args.take("pruning")?;
             args.finish()?;
             let heuristic = interpret_heuristic(eval)?;
+            let pruning = match pruning {
+                Some(value) => interpret_pruning(value, 0)?,
+                None => PruningConfig::Null,
+            };
             Ok(SearchConfig {
                 engine: Engine::AStar,
                 heuristic,
+                pruning,
             })
         }
         _ => Err(ConfigError::UnknownEngine {
@@ -492,6 +564,124 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
     };
     Args::new(term, &[])?.finish()?;
     Ok(heuristic)
+}
+
+/// The pruning methods of `pruning=...`.
+const PRUNING_METHODS: &str = "null, atom_centric_stubborn_sets, limited_pruning";
+
+/// `null()`, `atom_centric_stubborn_sets(...)` or `limited_pruning(...)`.
+fn interpret_pruning(value: &Value, depth: usize) -> Result<PruningConfig, ConfigError> {
+    let Value::Term(term) = value else {
+        return Err(invalid(
+            "astar",
+            &format!("`pruning` must be a pruning method, not a list (known: {PRUNING_METHODS})"),
+        ));
+    };
+    let function = term.name.as_str();
+    match function {
+        "null" => {
+            Args::new(term, &[])?.finish()?;
+            Ok(PruningConfig::Null)
+        }
+        "atom_centric_stubborn_sets" => {
+            let mut args = Args::new(term, &["use_sibling_shortcut", "atom_selection_strategy"])?;
+            let mut config = StubbornSetsConfig::default();
+            if let Some(v) = args.take("use_sibling_shortcut")? {
+                config.use_sibling_shortcut = match word(v) {
+                    Some("true") => true,
+                    Some("false") => false,
+                    _ => {
+                        return Err(invalid(
+                            function,
+                            &format!(
+                                "`use_sibling_shortcut` must be true or false, not {}",
+                                shown(v)
+                            ),
+                        ))
+                    }
+                };
+            }
+            if let Some(v) = args.take("atom_selection_strategy")? {
+                config.atom_selection_strategy = word(v)
+                    .and_then(AtomSelectionStrategy::from_name)
+                    .ok_or_else(|| {
+                        let known = AtomSelectionStrategy::ALL.map(AtomSelectionStrategy::name);
+                        invalid(
+                            function,
+                            &format!(
+                                "`atom_selection_strategy` must be one of {}, not {}",
+                                known.join(", "),
+                                shown(v)
+                            ),
+                        )
+                    })?;
+            }
+            args.finish()?;
+            Ok(PruningConfig::AtomCentricStubbornSets(config))
+        }
+        "limited_pruning" => {
+            if depth >= 4 {
+                return Err(invalid(function, "`pruning` is nested too deeply"));
+            }
+            let mut args = Args::new(
+                term,
+                &[
+                    "pruning",
+                    "min_required_pruning_ratio",
+                    "expansions_before_checking_pruning_ratio",
+                ],
+            )?;
+            let inner = args
+                .take("pruning")?
+                .ok_or_else(|| ConfigError::MissingArgument {
+                    function: function.into(),
+                    argument: "pruning".into(),
+                })?;
+            let mut config = LimitedPruningConfig::new(interpret_pruning(inner, depth + 1)?);
+            if let Some(v) = args.take("min_required_pruning_ratio")? {
+                let ratio = word(v)
+                    .and_then(|w| w.parse::<f64>().ok())
+                    .filter(|r| (0.0..=1.0).contains(r))
+                    .ok_or_else(|| {
+                        invalid(
+                            function,
+                            &format!(
+                                "`min_required_pruning_ratio` must be a number from 0 to 1, not {}",
+                                shown(v)
+                            ),
+                        )
+                    })?;
+                config.min_required_pruning_ratio = Ratio(ratio);
+            }
+            if let Some(v) = args.take("expansions_before_checking_pruning_ratio")? {
+                config.expansions_before_checking_pruning_ratio = integer(function, v, true)
+                    .map_err(|_| {
+                        invalid(
+                            function,
+                            &format!(
+                                "`expansions_before_checking_pruning_ratio` must be a non-negative integer or infinity, not {}",
+                                shown(v)
+                            ),
+                        )
+                    })?;
+            }
+            args.finish()?;
+            Ok(PruningConfig::Limited(config))
+        }
+        name => Err(invalid(
+            "astar",
+            &format!("unknown pruning method `{name}` (known: {PRUNING_METHODS})"),
+        )),
+    }
+}
+
+/// A value as an error message quotes it: `` `foo` `` for a word, else its kind.
+fn shown(value: &Value) -> String {
+    match (word(value), value) {
+        (Some(w), _) => format!("`{w}`"),
+        (None, Value::List(_)) => "a list".into(),
+        (None, Value::Term(t)) => format!("`{}(...)`", t.name),
+    }
 }
 
 /// `pdb(pattern=[0, 1])` or `pdb(pattern=manual_pattern([0, 1]))`.
@@ -1003,10 +1193,12 @@ mod tests {
         let blind = SearchConfig {
             engine: Engine::AStar,
             heuristic: HeuristicConfig::Blind,
+            pruning: PruningConfig::Null,
         };
         let hmax = SearchConfig {
             engine: Engine::AStar,
             heuristic: HeuristicConfig::HMax,
+            pruning: PruningConfig::Null,
         };
         assert_eq!(ok("astar(blind())"), blind);
         assert_eq!(ok("  astar ( blind ( ) )  "), blind);
@@ -1277,6 +1469,119 @@ mod tests {
         assert_eq!(
             err("(blind())"),
             "syntax error at byte 0 of the search string: expected a name, found `(`"
+        );
+    }
+
+    #[test]
+    fn pruning_strings_with_fast_downwards_names_and_defaults() {
+        let pruning = |s: &str| ok(s).pruning;
+        let stubborn = |use_sibling_shortcut, atom_selection_strategy| {
+            PruningConfig::AtomCentricStubbornSets(StubbornSetsConfig {
+                use_sibling_shortcut,
+                atom_selection_strategy,
+            })
+        };
+        use AtomSelectionStrategy::*;
+        assert_eq!(pruning("astar(blind())"), PruningConfig::Null);
+        assert_eq!(
+            pruning("astar(blind(), pruning=null())"),
+            PruningConfig::Null
+        );
+        assert_eq!(
+            pruning("astar(lmcut(), pruning=atom_centric_stubborn_sets())"),
+            stubborn(true, QuickSkip)
+        );
+        assert_eq!(
+            pruning(
+                "astar(lmcut(), pruning=atom_centric_stubborn_sets(use_sibling_shortcut=false, \
+                 atom_selection_strategy=dynamic_small))"
+            ),
+            stubborn(false, DynamicSmall)
+        );
+        for strategy in AtomSelectionStrategy::ALL {
+            let s = format!(
+                "astar(blind(), pruning=atom_centric_stubborn_sets(atom_selection_strategy={}))",
+                strategy.name()
+            );
+            assert_eq!(pruning(&s), stubborn(true, strategy));
+        }
+        let limited = pruning(
+            "astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), \
+             min_required_pruning_ratio=0.2, expansions_before_checking_pruning_ratio=1000))",
+        );
+        assert_eq!(
+            limited,
+            PruningConfig::Limited(LimitedPruningConfig::new(stubborn(true, QuickSkip)))
+        );
+        assert_eq!(
+            pruning(
+                "astar(blind(), pruning=limited_pruning(atom_centric_stubborn_sets(), 0.5, 10))"
+            ),
+            PruningConfig::Limited(LimitedPruningConfig {
+                pruning: Box::new(stubborn(true, QuickSkip)),
+                min_required_pruning_ratio: Ratio(0.5),
+                expansions_before_checking_pruning_ratio: 10,
+            })
+        );
+        // The canonical strings parse back to the same configuration.
+        for s in [
+            "astar(blind())",
+            "astar(lmcut(), pruning=atom_centric_stubborn_sets())",
+            "astar(ipdb(max_time=5), pruning=atom_centric_stubborn_sets(use_sibling_shortcut=false, atom_selection_strategy=static_small))",
+            "astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets()))",
+            "astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), min_required_pruning_ratio=0.5, expansions_before_checking_pruning_ratio=infinity))",
+        ] {
+            let config = ok(s);
+            assert_eq!(config.to_string(), s);
+            assert_eq!(ok(&config.to_string()), config);
+        }
+    }
+
+    #[test]
+    fn pruning_errors_name_the_option() {
+        assert_eq!(
+            err("astar(blind(), pruning=stubborn_sets_simple())"),
+            "`astar`: unknown pruning method `stubborn_sets_simple` (known: null, atom_centric_stubborn_sets, limited_pruning)"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=[1])"),
+            "`astar`: `pruning` must be a pruning method, not a list (known: null, atom_centric_stubborn_sets, limited_pruning)"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=atom_centric_stubborn_sets(atom_selection_strategy=foo))"),
+            "`atom_centric_stubborn_sets`: `atom_selection_strategy` must be one of fast_downward, quick_skip, static_small, dynamic_small, not `foo`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=atom_centric_stubborn_sets(use_sibling_shortcut=1))"),
+            "`atom_centric_stubborn_sets`: `use_sibling_shortcut` must be true or false, not `1`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=atom_centric_stubborn_sets(sibling=true))"),
+            "`atom_centric_stubborn_sets` does not take the argument `sibling=`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=limited_pruning())"),
+            "`limited_pruning` needs the argument `pruning`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), min_required_pruning_ratio=1.5))"),
+            "`limited_pruning`: `min_required_pruning_ratio` must be a number from 0 to 1, not `1.5`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=limited_pruning(pruning=atom_centric_stubborn_sets(), expansions_before_checking_pruning_ratio=-3))"),
+            "`limited_pruning`: `expansions_before_checking_pruning_ratio` must be a non-negative integer or infinity, not `-3`"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=limited_pruning(pruning=foo()))"),
+            "`astar`: unknown pruning method `foo` (known: null, atom_centric_stubborn_sets, limited_pruning)"
+        );
+        assert_eq!(
+            err("astar(blind(), pruning=null(), pruning=null())"),
+            "`astar` does not take the argument `pruning` twice"
+        );
+        assert_eq!(
+            err("astar(blind(), atom_centric_stubborn_sets())"),
+            "`astar` does not take the argument number 2 (positional)"
         );
     }
 

@@ -15,6 +15,9 @@
 //! - [`astar`]: eager A* with reopening, returning a [`SearchResult`] (an [`Outcome`] and
 //!   Fast Downward-style [`Statistics`]) under [`SearchLimits`], reporting each new
 //!   f-layer to an optional observer;
+//! - partial-order reduction: [`PruningConfig`] (`pruning=atom_centric_stubborn_sets()`,
+//!   `limited_pruning(...)`) built into a [`Pruning`] that [`astar_with_pruning`] applies
+//!   to each expansion, with what it pruned in [`PruningStatistics`];
 //! - [`parse_search`] and [`alias`]: Fast Downward-style search strings
 //!   (`astar(hmax())`, `seq-opt-lmcut`), and [`search`] to run one;
 //! - [`replay`]: applies a plan to the initial state, checking every step.
@@ -68,6 +71,7 @@ mod lmcut;
 mod open_list;
 mod pdb;
 mod plan;
+mod pruning;
 mod radix_heap;
 mod segmented;
 pub mod state;
@@ -79,7 +83,10 @@ mod successor;
 #[path = "../tests/common/mod.rs"]
 mod test_tasks;
 
-pub use astar::{astar, Outcome, Progress, SearchError, SearchLimits, SearchResult, Statistics};
+pub use astar::{
+    astar, astar_with_pruning, Outcome, Progress, SearchError, SearchLimits, SearchResult,
+    Statistics,
+};
 pub use config::{
     alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, HeuristicName,
     PatternCollectionConfig, SearchConfig, ALIASES, SEARCH_ENGINES,
@@ -91,6 +98,10 @@ pub use ipdb::{ipdb, ClimbEnd, HillClimbingStatistics, IpdbConfig, DEFAULT_SEED}
 pub use lmcut::{tie_breaking_order, LmCut};
 pub use pdb::{construction_bytes, PatternDatabase, PatternError, MAX_PDB_SIZE};
 pub use plan::{replay, Plan, ReplayError};
+pub use pruning::{
+    AtomSelectionStrategy, LimitedPruningConfig, Pruning, PruningConfig, PruningStatistics, Ratio,
+    RatioCheck, StubbornSetsConfig,
+};
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;
 
@@ -115,7 +126,10 @@ pub fn search(
             })
         }
     };
+    let mut pruning = config.pruning.build(task);
     match config.engine {
-        Engine::AStar => astar(task, &mut heuristic, limits, observer),
+        Engine::AStar => {
+            astar_with_pruning(task, &mut heuristic, pruning.as_mut(), limits, observer)
+        }
     }
 }

@@ -10,8 +10,9 @@ use proptest::prelude::*;
 mod common;
 use common::tasks;
 use search::{
-    astar, ipdb, parse_search, replay, Blind, CanonicalPdbs, HMax, Heuristic, IpdbConfig, LmCut,
-    Outcome, PatternDatabase, SearchLimits, SearchResult,
+    astar, astar_with_pruning, ipdb, parse_search, replay, AtomSelectionStrategy, Blind,
+    CanonicalPdbs, HMax, Heuristic, IpdbConfig, LimitedPruningConfig, LmCut, Outcome,
+    PatternDatabase, PruningConfig, Ratio, SearchLimits, SearchResult, StubbornSetsConfig,
 };
 use task::{Fact, OpId, Operator, Task, VarId, Variable};
 
@@ -349,6 +350,49 @@ proptest! {
         let result = run(&task, &mut Erratic::new(&space, &task, 1));
         prop_assert_eq!(cost(&result), optimal);
         check_plan(&task, &result);
+    }
+
+    #[test]
+    fn stubborn_sets_preserve_the_optimal_cost_with_any_heuristic(
+        task in tasks(),
+        strategy in 0usize..4,
+        use_sibling_shortcut in any::<bool>(),
+        check_after in 0u64..4,
+    ) {
+        let space = Space::new(&task);
+        let forward = space.forward(&task);
+        let optimal = (0..space.states.len())
+            .filter(|&s| task.is_goal(&space.states[s]))
+            .filter_map(|s| forward[s])
+            .min();
+        let stubborn = PruningConfig::AtomCentricStubbornSets(StubbornSetsConfig {
+            use_sibling_shortcut,
+            atom_selection_strategy: AtomSelectionStrategy::ALL[strategy],
+        });
+        let limited = PruningConfig::Limited(LimitedPruningConfig {
+            pruning: Box::new(stubborn.clone()),
+            min_required_pruning_ratio: Ratio(0.5),
+            expansions_before_checking_pruning_ratio: check_after,
+        });
+        for config in [stubborn, limited] {
+            let heuristics: Vec<Box<dyn Heuristic>> = vec![
+                Box::new(Blind::new(&task)),
+                Box::new(HMax::new(&task).unwrap()),
+                Box::new(LmCut::new(&task).unwrap()),
+                Box::new(Erratic::new(&space, &task, 3)),
+            ];
+            for mut h in heuristics {
+                let mut pruning = config.build(&task).unwrap();
+                let result = astar_with_pruning(
+                    &task, &mut h, Some(&mut pruning), &SearchLimits::default(), None,
+                ).unwrap();
+                prop_assert_eq!(cost(&result), optimal, "{} with {:?}", h.name(), config);
+                check_plan(&task, &result);
+                let p = result.statistics.pruning.unwrap();
+                prop_assert!(p.successors_after <= p.successors_before);
+                prop_assert_eq!(p.successors_after, result.statistics.generated);
+            }
+        }
     }
 
     #[test]

@@ -17,7 +17,7 @@ use std::time::{Duration, Instant};
 
 pub use exit_code::ExitCode;
 pub use fast_downward::{parse_log, FastDownward, FdLog};
-pub use logged::{plan_logged, LoggedRun, PlanInput, RunError, StatisticsRecord};
+pub use logged::{plan_logged, LoggedRun, PlanInput, PruningRecord, RunError, StatisticsRecord};
 pub use printout::{compare_full, level_header, level_row};
 pub use run::{
     plan_task, translate_checked, translate_checked_within, MemoryProbe, Outcome, PlanRun,

@@ -22,6 +22,8 @@ pub enum PlanInput<'a> {
         domain: &'a pddl::Domain,
         /// The problem.
         problem: &'a pddl::Problem,
+        /// The translator's options beyond Fast Downward's translation.
+        options: translate::TranslateOptions,
     },
     /// A finite-domain task (Fast Downward's `output.sas`, or one translated before),
     /// searched as it is.
@@ -65,8 +67,12 @@ pub fn plan_logged(
     let translated;
     let task = match input {
         PlanInput::Task(task) => task,
-        PlanInput::Pddl { domain, problem } => {
-            let translation = translate::translate_within(domain, problem, limits)?;
+        PlanInput::Pddl {
+            domain,
+            problem,
+            options,
+        } => {
+            let translation = translate::translate_with_options(domain, problem, limits, &options)?;
             for line in translation.log().lines() {
                 log(line);
             }
@@ -108,6 +114,12 @@ pub fn plan_logged(
         log(&s.to_string());
     }
     let heuristic_time = start.elapsed();
+    let mut pruning = config.pruning.build(task);
+    if pruning.is_some() {
+        for line in config.pruning.setup_lines() {
+            log(line);
+        }
+    }
     let mut observer = |p: search::Progress| {
         log(&format!(
             "f = {}, {} evaluated, {} expanded [t={:.3}s]",
@@ -118,9 +130,22 @@ pub fn plan_logged(
         ));
     };
     let result = match config.engine {
-        search::Engine::AStar => search::astar(task, &mut heuristic, limits, Some(&mut observer)),
+        search::Engine::AStar => search::astar_with_pruning(
+            task,
+            &mut heuristic,
+            pruning.as_mut(),
+            limits,
+            Some(&mut observer),
+        ),
     }?;
     let statistics = result.statistics;
+    // Fast Downward prints limited pruning's check when it makes it, during the
+    // search; the search reports it at its end, so it comes before the outcome here.
+    if let Some(check) = statistics.pruning.and_then(|p| p.check) {
+        for line in check.log_lines() {
+            log(&line);
+        }
+    }
     if let Some(h) = statistics.initial_h {
         log(&format!("Initial heuristic value: {h}"));
     }
@@ -226,6 +251,17 @@ impl LoggedRun {
                 "Number of registered states: {}",
                 s.registered_states
             ));
+            if let Some(p) = &s.pruning {
+                line(format!(
+                    "total successors before pruning: {}",
+                    p.successors_before
+                ));
+                line(format!(
+                    "total successors after pruning: {}",
+                    p.successors_after
+                ));
+                line(format!("Pruning ratio: {:.6}", p.ratio()));
+            }
             line(format!("Search time: {:.6}s", s.search_time.as_secs_f64()));
         }
         line(format!(
@@ -264,6 +300,7 @@ impl LoggedRun {
             },
             peak_memory_kb,
             plan_cost: self.run.cost,
+            pruning: s.and_then(|s| s.pruning).map(PruningRecord::from),
             plan_length: self.run.cost.map(|_| self.run.plan.len()),
             registered_states: s.map(|s| s.registered_states),
             reopened: s.map(|s| s.reopened),
@@ -303,6 +340,8 @@ pub struct StatisticsRecord {
     pub plan_cost: Option<u64>,
     /// The plan's steps.
     pub plan_length: Option<usize>,
+    /// What partial-order reduction did; `null` without `pruning=`.
+    pub pruning: Option<PruningRecord>,
     /// States registered.
     pub registered_states: Option<u64>,
     /// States reopened.
@@ -315,6 +354,37 @@ pub struct StatisticsRecord {
     pub translate_time_s: f64,
     /// Variables of the searched task.
     pub variables: Option<usize>,
+}
+
+/// Partial-order reduction's numbers in `--stats-json`: the closing lines' counts and
+/// ratio, and limited pruning's check.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct PruningRecord {
+    /// Applicable operators of the pruned states ("total successors before pruning").
+    pub successors_before: u64,
+    /// Operators left ("total successors after pruning").
+    pub successors_after: u64,
+    /// "Pruning ratio": the share pruned.
+    pub ratio: f64,
+    /// Calls before limited pruning checked its ratio; `null` where it did not.
+    pub checked_after_calls: Option<u64>,
+    /// The ratio at that check.
+    pub ratio_at_check: Option<f64>,
+    /// Whether the check switched pruning off.
+    pub switched_off: bool,
+}
+
+impl From<search::PruningStatistics> for PruningRecord {
+    fn from(p: search::PruningStatistics) -> PruningRecord {
+        PruningRecord {
+            successors_before: p.successors_before,
+            successors_after: p.successors_after,
+            ratio: p.ratio(),
+            checked_after_calls: p.check.map(|c| c.calls),
+            ratio_at_check: p.check.map(|c| c.ratio()),
+            switched_off: p.check.is_some_and(|c| c.switched_off),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -339,6 +409,7 @@ mod tests {
         let input = PlanInput::Pddl {
             domain: &domain,
             problem: &problem,
+            options: translate::TranslateOptions::default(),
         };
         let result = plan_logged(input, &config, limits, start, &mut |l| {
             lines.push(l.to_string())

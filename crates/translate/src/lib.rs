@@ -32,6 +32,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod dominated;
 mod ground;
 mod invariants;
 mod log;
@@ -39,6 +40,8 @@ mod model;
 mod sas;
 mod variable_order;
 mod watch;
+
+pub use dominated::remove_dominated_operators;
 
 /// What translation can fail on, beyond what the PDDL checker already rejects.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -80,6 +83,19 @@ pub struct TranslateStats {
     pub mutex_groups: usize,
     /// Variables before goal-irrelevant ones were removed.
     pub variables_before_relevance: usize,
+    /// Dominated operators removed ([`TranslateOptions::remove_dominated_operators`]);
+    /// `None` when that was not asked for.
+    pub dominated_operators_removed: Option<usize>,
+}
+
+/// What the translator does beyond Fast Downward's translation; the default is exactly
+/// Fast Downward's (its variables, values and operators, in its order).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct TranslateOptions {
+    /// `--remove-dominated-operators`: drop every operator another with the same effects,
+    /// a subset of its preconditions and no higher cost dominates
+    /// ([`remove_dominated_operators`]). Keeps the optimal cost.
+    pub remove_dominated_operators: bool,
 }
 
 /// A translated task with statistics.
@@ -167,6 +183,17 @@ pub fn translate_within(
     problem: &pddl::Problem,
     limits: &task::Limits,
 ) -> Result<Translation, TranslateError> {
+    translate_with_options(domain, problem, limits, &TranslateOptions::default())
+}
+
+/// Like [`translate_within`], with `options` beyond Fast Downward's translation, applied
+/// to the finished task under the same limits.
+pub fn translate_with_options(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    limits: &task::Limits,
+    options: &TranslateOptions,
+) -> Result<Translation, TranslateError> {
     let watch = watch::Watch::new(limits);
     let stopped = |stats: TranslateStats| {
         let limit = watch.stopped().unwrap_or(task::Limit::Time);
@@ -223,14 +250,17 @@ pub fn translate_within(
         return stopped(stats);
     }
     stats.variables_before_relevance = result.variables_before_relevance;
-    result
-        .task
-        .validate()
+    let mut task = result.task;
+    if options.remove_dominated_operators {
+        let removed = remove_dominated_operators(&mut task, &mut || watch.check());
+        stats.dominated_operators_removed = Some(removed);
+        if watch.check() {
+            return stopped(stats);
+        }
+    }
+    task.validate()
         .map_err(|e| TranslateError::Internal(e.to_string()))?;
-    Ok(Translation::Task(TranslatedTask {
-        task: result.task,
-        stats,
-    }))
+    Ok(Translation::Task(TranslatedTask { task, stats }))
 }
 
 #[cfg(test)]

@@ -34,8 +34,11 @@ impl Translation {
                     format!("Translator goal facts: {}", sizes.goal_facts),
                     format!("Translator mutex groups: {}", sizes.mutex_groups),
                     format!("Translator total mutex groups size: {mutex_size}"),
-                    format!("Translator operators: {}", sizes.operators),
                 ]);
+                if let Some(n) = s.dominated_operators_removed {
+                    lines.push(format!("Removed {n} dominated operator(s)"));
+                }
+                lines.push(format!("Translator operators: {}", sizes.operators));
             }
         }
         lines.iter().map(|l| format!("{l}\n")).collect()

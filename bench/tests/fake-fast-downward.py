@@ -8,11 +8,14 @@ Downward's words. It knows the plans of the test's instances by problem file nam
 - `reach-d.pddl`: out of time (exit 23, no plan), as Fast Downward reports it.
 
 With FAKE_PEER_WRONG=1 it claims cost 2 for `reach-c.pddl` with a plan that does not
-reach the goal, which compare-fd must catch."""
+reach the goal, which compare-fd must catch. With FAKE_PEER_HANG=FILE it writes FILE and
+then waits (for a kill) on `reach-d.pddl`, so that a test can interrupt the grid while
+the cell runs."""
 
 import argparse
 import os
 import sys
+import time
 from pathlib import Path
 
 ap = argparse.ArgumentParser()
@@ -37,6 +40,10 @@ if name == "reach-c.pddl":
         print(f"[t=0.0012s, 8800 KB] {line}")
     print("Peak memory: 8800 KB")
     sys.exit(0)
+if os.environ.get("FAKE_PEER_HANG"):
+    Path(os.environ["FAKE_PEER_HANG"]).write_text(f"{os.getpid()}\n")
+    while True:
+        time.sleep(1)
 print("[t=0.5s, 8800 KB] Time limit has been reached.")
 print("Peak memory: 8800 KB")
 sys.exit(23)

@@ -11,9 +11,11 @@ validate plans with; a missing binary is a failure, not a skip. CI runs this
 
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 from pathlib import Path
 
@@ -62,13 +64,15 @@ class CompareFdGrid(unittest.TestCase):
     def tearDown(self):
         self.tmp.cleanup()
 
+    def grid_command(self, *extra):
+        return [sys.executable, str(SCRIPT), "--list", str(self.list), "--benchmarks",
+                str(self.suite), "--planners", "demoplan,fd,symk", "--demoplan", str(DEMOPLAN),
+                "--fd", str(FAKE), "--symk", str(FAKE), "--time-limit", "60", "--out",
+                str(self.out), *extra]
+
     def grid(self, *extra, env=None):
-        cmd = [sys.executable, str(SCRIPT), "--list", str(self.list), "--benchmarks",
-               str(self.suite), "--planners", "demoplan,fd,symk", "--demoplan", str(DEMOPLAN),
-               "--fd", str(FAKE), "--symk", str(FAKE), "--time-limit", "60", "--out",
-               str(self.out), *extra]
-        return subprocess.run(cmd, capture_output=True, text=True, timeout=600,
-                              env={**os.environ, **(env or {})})
+        return subprocess.run(self.grid_command(*extra), capture_output=True, text=True,
+                              timeout=600, env={**os.environ, **(env or {})})
 
     def properties(self):
         return json.loads((self.out / "eval" / "properties").read_text())
@@ -147,6 +151,28 @@ class CompareFdGrid(unittest.TestCase):
         self.assertEqual(len(self.properties()), 6)
         forced = self.grid("--force")
         self.assertIn("6 computed now", forced.stdout)
+
+    def test_an_interrupted_grid_resumes_with_every_result_whole(self):
+        mark = Path(self.tmp.name) / "peer-running"
+        cmd = self.grid_command("--planners", "fd")
+        proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                env={**os.environ, "FAKE_PEER_HANG": str(mark)})
+        # Wait for the hanging cell (reach-d, task 2) to be running: on its marker.
+        while not mark.exists():
+            self.assertIsNone(proc.poll(), "the grid ended before its second cell ran")
+            time.sleep(0.05)
+        proc.send_signal(signal.SIGINT)
+        _, stderr = proc.communicate(timeout=120)
+        self.assertEqual(proc.returncode, 130, stderr)
+        self.assertIn("interrupted", stderr)
+        hung = self.out / "runs-00001-00100" / "00002"
+        self.assertTrue((hung / "started").is_file())
+        self.assertFalse((hung / "record.json").exists(), "an interrupted cell wrote a result")
+        self.assertTrue((self.out / "runs-00001-00100" / "00001" / "record.json").is_file())
+        done = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertIn("1 reused", done.stderr)
+        self.assertEqual(len(self.properties()), 2)
 
     def test_a_wrong_plan_of_a_peer_fails_the_grid(self):
         done = self.grid(env={"FAKE_PEER_WRONG": "1"})

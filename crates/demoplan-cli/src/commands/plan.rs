@@ -12,13 +12,14 @@ use slim::ExitCode;
 use task::memory;
 use task::units::{parse_memory_limit, parse_time_limit};
 
-/// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or
-/// `auto` ([`experiment::auto_memory_limit`]).
-pub fn parse_run_memory_limit(text: &str, runs_at_once: usize) -> Result<Option<u64>, Failure> {
-    if text.trim().eq_ignore_ascii_case("auto") {
-        return Ok(experiment::auto_memory_limit(runs_at_once));
-    }
-    parse_memory_limit(text)
+/// `--memory-limit` of `solve`, `reproduce`, `study` (`experiment::grid::memory_limit`:
+/// `auto` is shared by the runs at once, or fixed on a grid written for Slurm).
+pub fn parse_run_memory_limit(
+    text: &str,
+    runs_at_once: usize,
+    slurm: bool,
+) -> Result<Option<u64>, Failure> {
+    experiment::grid::memory_limit(text, runs_at_once, slurm)
         .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--memory-limit: {e}")))
 }
 

@@ -23,7 +23,8 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
             .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))?,
         None => None,
     };
-    let memory_limit = crate::commands::plan::parse_run_memory_limit(&args.limits.memory_limit, 1)?;
+    let memory_limit =
+        crate::commands::plan::parse_run_memory_limit(&args.limits.memory_limit, 1, false)?;
     let limits = slim::RunLimits {
         time: time_limit,
         memory_bytes: memory_limit,

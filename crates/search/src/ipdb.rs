@@ -726,13 +726,10 @@ fn count_improvements(
 ) -> Vec<u64> {
     let (sample_h, non_additive) = (collection.sample_h, collection.non_additive);
     let samples = sample_h.len();
+    let all: Vec<usize> = (0..keys.len()).collect();
     let mut needed = vec![0usize; non_additive.len()];
     let mut marked = vec![usize::MAX; samples];
-    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); non_additive.len()];
-    for (i, &k) in keys.iter().enumerate() {
-        by_group[k].push(i);
-    }
-    for (k, members) in by_group.iter().enumerate() {
+    for (k, members) in by_group(keys, &all, non_additive.len()).iter().enumerate() {
         for &i in members {
             for (s, (&h, current)) in candidate_h[i * samples..(i + 1) * samples]
                 .iter()
@@ -747,32 +744,29 @@ fn count_improvements(
             }
         }
     }
-    let dense: Vec<bool> = needed.iter().map(|&n| 2 * n > samples).collect();
+    let (dense, sparse): (Vec<usize>, Vec<usize>) = all
+        .into_iter()
+        .partition(|&i| 2 * needed[keys[i]] > samples);
     let mut improved = vec![0u64; keys.len()];
-    for (want_dense, count) in [
-        (true, count_by_reduced_cliques as CountFn),
-        (false, count_by_sorted_cliques as CountFn),
-    ] {
-        let chosen: Vec<usize> = (0..keys.len())
-            .filter(|&i| dense[keys[i]] == want_dense)
-            .collect();
-        if chosen.is_empty() {
-            continue;
-        }
-        let sub_keys: Vec<usize> = chosen.iter().map(|&i| keys[i]).collect();
-        let mut sub_h: Vec<u32> = Vec::with_capacity(chosen.len() * samples);
-        for &i in &chosen {
-            sub_h.extend_from_slice(&candidate_h[i * samples..(i + 1) * samples]);
-        }
-        let counts = count(collection, &sub_keys, &sub_h);
-        for (&i, c) in chosen.iter().zip(counts) {
-            improved[i] = c;
-        }
-    }
+    count_by_reduced_cliques(collection, keys, candidate_h, &dense, &mut improved);
+    count_by_sorted_cliques(collection, keys, candidate_h, &sparse, &mut improved);
     improved
 }
 
-type CountFn = fn(&CollectionOnSamples<'_>, &[usize], &[u32]) -> Vec<u64>;
+/// The candidates `chosen` grouped by their key: group `k` lists, in order, those with
+/// `keys[i] == k`.
+fn by_group(keys: &[usize], chosen: &[usize], groups: usize) -> Vec<Vec<usize>> {
+    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); groups];
+    for &i in chosen {
+        by_group[keys[i]].push(i);
+    }
+    by_group
+}
+
+/// A way of counting: for each candidate `i` in `chosen`, the samples it improves into
+/// `improved[i]` (the arguments as [`count_improvements`]'s).
+#[cfg(test)]
+type CountFn = fn(&CollectionOnSamples<'_>, &[usize], &[u32], &[usize], &mut [u64]);
 
 /// The collection's side of evaluating candidates: its cliques, its patterns' values on
 /// the samples (`values[p * samples + s]`), its canonical value per sample (`None`: a
@@ -800,7 +794,9 @@ fn count_by_reduced_cliques(
     collection: &CollectionOnSamples<'_>,
     keys: &[usize],
     candidate_h: &[u32],
-) -> Vec<u64> {
+    chosen: &[usize],
+    improved: &mut [u64],
+) {
     let CollectionOnSamples {
         cliques,
         values,
@@ -809,11 +805,7 @@ fn count_by_reduced_cliques(
         non_additive,
     } = *collection;
     let samples = sample_h.len();
-    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); non_additive.len()];
-    for (i, &k) in keys.iter().enumerate() {
-        by_group[k].push(i);
-    }
-    let mut improved = vec![0u64; keys.len()];
+    let by_group = by_group(keys, chosen, non_additive.len());
     let mut excluded = vec![false; patterns];
     let mut reduced_seen: FxHashSet<Vec<u32>> = FxHashSet::default();
     let mut best = vec![0u64; samples];
@@ -861,7 +853,6 @@ fn count_by_reduced_cliques(
                 .count() as u64;
         }
     }
-    improved
 }
 
 /// [`count_improvements`] for groups whose candidates need the collection's part on few
@@ -879,7 +870,9 @@ fn count_by_sorted_cliques(
     collection: &CollectionOnSamples<'_>,
     keys: &[usize],
     candidate_h: &[u32],
-) -> Vec<u64> {
+    chosen: &[usize],
+    improved: &mut [u64],
+) {
     let CollectionOnSamples {
         cliques,
         values,
@@ -901,7 +894,6 @@ fn count_by_sorted_cliques(
             excluded_sets[k * words + p as usize / 64] |= 1 << (p % 64);
         }
     }
-    let mut improved = vec![0u64; keys.len()];
     let mut column = vec![0u64; patterns];
     let mut heap_storage: Vec<(u64, std::cmp::Reverse<u32>)> = Vec::with_capacity(cliques.len());
     let mut prefix: Vec<(u64, u32)> = Vec::with_capacity(cliques.len());
@@ -920,8 +912,8 @@ fn count_by_sorted_cliques(
         let mut heap = std::collections::BinaryHeap::from(std::mem::take(&mut heap_storage));
         prefix.clear();
         scan.fill((0, 0));
-        for (i, &k) in keys.iter().enumerate() {
-            let h = candidate_h[i * samples + s];
+        for &i in chosen {
+            let (k, h) = (keys[i], candidate_h[i * samples + s]);
             let better = match current {
                 _ if h == DEAD => true,
                 None => false,
@@ -963,7 +955,6 @@ fn count_by_sorted_cliques(
         }
         heap_storage = heap.into_vec();
     }
-    improved
 }
 
 /// A state under a random walk and its applicable operators in Fast Downward's order,
@@ -1565,24 +1556,21 @@ mod tests {
                     }
                 })
                 .collect();
-            // The dispatcher and both ways of counting, each on every group.
-            let counts: Vec<Vec<u64>> = [
-                count_improvements as CountFn,
-                count_by_reduced_cliques,
-                count_by_sorted_cliques,
-            ]
-            .iter()
-            .map(|count| {
-                let collection = CollectionOnSamples {
-                    cliques: &cliques,
-                    values: &values,
-                    sample_h: &sample_h,
-                    patterns,
-                    non_additive: &groups,
-                };
-                count(&collection, &keys, &candidate_h)
-            })
-            .collect();
+            // The dispatcher and both ways of counting, each on every candidate.
+            let collection = CollectionOnSamples {
+                cliques: &cliques,
+                values: &values,
+                sample_h: &sample_h,
+                patterns,
+                non_additive: &groups,
+            };
+            let all: Vec<usize> = (0..candidates).collect();
+            let mut counts = vec![count_improvements(&collection, &keys, &candidate_h)];
+            for count in [count_by_reduced_cliques as CountFn, count_by_sorted_cliques] {
+                let mut improved = vec![0u64; candidates];
+                count(&collection, &keys, &candidate_h, &all, &mut improved);
+                counts.push(improved);
+            }
             for (i, &k) in keys.iter().enumerate() {
                 let expected: u64 = (0..samples)
                     .filter(|&s| {

@@ -288,14 +288,14 @@ pub fn read(text: &str) -> Result<Task, SasError> {
     }
     c.end()?;
 
-    let task = Task {
+    let task = Task::new(
         variables,
         mutexes,
         initial_state,
         goal,
         operators,
         use_costs,
-    };
+    );
     task.validate()?;
     Ok(task)
 }
@@ -931,16 +931,7 @@ end_operator
                 proptest::collection::vec(operator, 0..5),
                 any::<bool>(),
             )
-                .prop_map(
-                    |(variables, mutexes, initial_state, goal, operators, use_costs)| Task {
-                        variables,
-                        mutexes,
-                        initial_state,
-                        goal,
-                        operators,
-                        use_costs,
-                    },
-                )
+                .prop_map(|(v, m, i, g, o, u)| Task::new(v, m, i, g, o, u))
         })
     }
 

@@ -299,14 +299,14 @@ pub(crate) fn build(
         .filter(|grp| grp.len() >= 2)
         .collect();
 
-    let task = Task {
+    let task = Task::new(
         variables,
         mutexes,
         initial_state,
         goal,
         operators,
-        use_costs: model.use_costs,
-    };
+        model.use_costs,
+    );
     let variables_before_relevance = task.variables.len();
     let task = variable_order::by_atoms(task);
     Ok(Built::Task(SasResult {

@@ -55,7 +55,7 @@ fn lower_crates_never_depend_on_higher_ones() {
         ("search", &["task"]),
         ("validate", &["pddl"]),
         ("simulate", &["atomic-write", "geometry", "recording"]),
-        ("import", &["bags", "recording"]),
+        ("import", &["atomic-write", "bags", "recording"]),
         ("grounding", &["recording"]),
         ("segment", &["recording", "grounding"]),
     ] {

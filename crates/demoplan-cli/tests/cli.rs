@@ -1082,7 +1082,7 @@ fn malformed_demonstration_inputs_name_file_line_and_field() {
     for (file, args) in cases {
         let out = demoplan()
             .current_dir(demonstrations())
-            .args(&args)
+            .args(args)
             .output()
             .unwrap();
         let stderr = stderr_text(&out);

@@ -55,7 +55,7 @@ fn lower_crates_never_depend_on_higher_ones() {
         ("search", &["task"]),
         ("validate", &["pddl"]),
         ("simulate", &["atomic-write", "geometry", "recording"]),
-        ("import", &["bags", "recording"]),
+        ("import", &["atomic-write", "bags", "recording"]),
         ("grounding", &["recording"]),
         ("segment", &["recording", "grounding"]),
     ] {
@@ -127,5 +127,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 2_950, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 2_870, "crates/demoplan-cli/src has {total} lines");
 }

@@ -45,17 +45,11 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         .map_err(usage)?
         .flatten();
     let search_string = match (&args.search, &args.alias) {
-        (Some(s), _) => s.clone(),
-        (None, Some(a)) => search::alias(a).map(str::to_string).ok_or_else(|| {
-            let known: Vec<&str> = search::ALIASES.iter().map(|(name, _)| *name).collect();
-            usage(format!(
-                "unknown alias `{a}`; known aliases: {}",
-                known.join(", ")
-            ))
-        })?,
+        (Some(s), _) => s.as_str(),
+        (None, Some(a)) => search::alias(a).map_err(|e| usage(e.to_string()))?,
         (None, None) => return Err(usage("give a search with --search or --alias".into())),
     };
-    let config = search::parse_search(&search_string)
+    let config = search::parse_search(search_string)
         .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, format!("--search: {e}")))?;
     // Like Fast Downward, never leave an old plan behind that could be mistaken for this
     // run's.

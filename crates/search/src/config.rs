@@ -1042,12 +1042,14 @@ fn interpret_abstraction(function: &str, value: &Value) -> Result<PatternGenerat
             }
             "hillclimbing" => PatternGenerator::HillClimbing(interpret_ipdb(t, false)?),
             "sys_scp" => PatternGenerator::SysScp(interpret_sys_scp(t)?),
-            name => return Err(invalid(
-                "projections",
-                &format!(
+            name => {
+                return Err(invalid(
+                    "projections",
+                    &format!(
                     "unknown pattern collection generator `{name}` (known: {PATTERN_GENERATORS})"
                 ),
-            )),
+                ))
+            }
         },
     };
     Ok(generator)

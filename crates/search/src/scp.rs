@@ -18,7 +18,9 @@
 //! costs, `A2` what `A1` does not need (the remaining costs `c - saturated(A1)`), and so
 //! on; the sum of the abstract goal distances is admissible because the parts sum to at
 //! most `c`. Tables that are 0 everywhere are not stored. The heuristic is the maximum
-//! over the orders it keeps; a state is a dead end if any projection says so (dead ends
+//! over the orders it keeps and over the single projections under the full costs (a
+//! lookup each, which the dead-end test makes anyway; so it is never below the best
+//! single pattern database); a state is a dead end if any projection says so (dead ends
 //! do not depend on costs).
 //!
 //! *Greedy orders* (`greedy_orders()`, the paper's static `h/stolen` ordering): for a
@@ -918,10 +920,12 @@ impl Heuristic for Scp {
     }
 
     fn evaluate(&mut self, state: &[u32]) -> Option<u64> {
+        let mut single = 0u64;
         for (i, p) in self.projections.iter().enumerate() {
             let index = p.index(state);
-            if self.full[i][index] == DEAD {
-                return None;
+            match self.full[i][index] {
+                DEAD => return None,
+                v => single = single.max(u64::from(v)),
             }
             self.indices[i] = index;
         }
@@ -930,7 +934,8 @@ impl Heuristic for Scp {
             .iter()
             .map(|o| o.value(&self.indices))
             .max()
-            .unwrap_or(0);
+            .unwrap_or(0)
+            .max(single);
         if let Some(online) = &mut self.online {
             let due = online.evaluations.is_multiple_of(online.interval);
             online.evaluations += 1;

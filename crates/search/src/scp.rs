@@ -173,16 +173,7 @@ pub fn systematic_up_to(
     mut stop: impl FnMut() -> bool,
 ) -> Vec<Vec<u32>> {
     let predecessors = causal_predecessors(task);
-    let mut level: Vec<Vec<u32>> = {
-        let mut goals: Vec<u32> = task.goal.iter().map(|f| f.var.0).collect();
-        goals.sort_unstable();
-        goals.dedup();
-        goals
-            .into_iter()
-            .map(|v| vec![v])
-            .filter(|p| fits(task, p, max_pdb_size))
-            .collect()
-    };
+    let mut level = goal_patterns(task, max_pdb_size);
     let mut out = Vec::new();
     let mut size = 1;
     while !level.is_empty() {
@@ -190,30 +181,61 @@ pub fn systematic_up_to(
         if size >= max_size {
             break;
         }
-        let mut next: FxHashSet<Vec<u32>> = FxHashSet::default();
-        for p in &level {
-            if stop() {
-                return out;
-            }
-            for &v in p {
-                for &w in &predecessors[v as usize] {
-                    if p.binary_search(&w).is_ok() {
-                        continue;
-                    }
-                    let mut q = p.clone();
-                    let at = q.partition_point(|&x| x < w);
-                    q.insert(at, w);
-                    if fits(task, &q, max_pdb_size) {
-                        next.insert(q);
-                    }
-                }
-            }
+        let (next, stopped) = grow(task, &predecessors, &level, max_pdb_size, &mut stop);
+        if stopped {
+            return out;
         }
-        level = next.into_iter().collect();
-        level.sort_unstable();
+        level = next;
         size += 1;
     }
     out
+}
+
+/// The patterns of one goal variable each, sorted, that fit `max_pdb_size`.
+fn goal_patterns(task: &Task, max_pdb_size: u64) -> Vec<Vec<u32>> {
+    let mut goals: Vec<u32> = task.goal.iter().map(|f| f.var.0).collect();
+    goals.sort_unstable();
+    goals.dedup();
+    goals
+        .into_iter()
+        .map(|v| vec![v])
+        .filter(|p| fits(task, p, max_pdb_size))
+        .collect()
+}
+
+/// The next size: each pattern of `level` with one predecessor of one of its variables
+/// added, deduplicated and sorted; true if `stop()` said so (then the list is partial).
+fn grow(
+    task: &Task,
+    predecessors: &[Vec<u32>],
+    level: &[Vec<u32>],
+    max_pdb_size: u64,
+    stop: &mut impl FnMut() -> bool,
+) -> (Vec<Vec<u32>>, bool) {
+    let mut next: FxHashSet<Vec<u32>> = FxHashSet::default();
+    let mut stopped = false;
+    for p in level {
+        if stop() {
+            stopped = true;
+            break;
+        }
+        for &v in p {
+            for &w in &predecessors[v as usize] {
+                if p.binary_search(&w).is_ok() {
+                    continue;
+                }
+                let mut q = p.clone();
+                let at = q.partition_point(|&x| x < w);
+                q.insert(at, w);
+                if fits(task, &q, max_pdb_size) {
+                    next.insert(q);
+                }
+            }
+        }
+    }
+    let mut next: Vec<Vec<u32>> = next.into_iter().collect();
+    next.sort_unstable();
+    (next, stopped)
 }
 
 fn fits(task: &Task, pattern: &[u32], max_pdb_size: u64) -> bool {
@@ -848,10 +870,12 @@ fn sys_scp(
     let deadline = phase_deadline(start, config.max_time, limits.deadline);
     let clock = limits.clock().or_earlier(deadline);
     let max_pdb = config.max_pdb_size.min(MAX_PDB_SIZE);
-    let candidates = systematic_up_to(task, config.max_pattern_size, max_pdb, || clock.passed());
+    let predecessors = causal_predecessors(task);
+    // The candidates, size by size, generated when the loop first reaches a size.
+    let mut levels: Vec<Vec<Vec<u32>>> = vec![goal_patterns(task, max_pdb)];
+    let mut done: Vec<Vec<bool>> = vec![vec![false; levels[0].len()]];
     let mut kept: Vec<Projection> = Vec::new();
     let mut kept_size: u64 = 0;
-    let mut done = vec![false; candidates.len()];
     let own = |kept: &[Projection]| kept.iter().map(Projection::bytes).sum::<u64>();
     'restarts: loop {
         let restart = Instant::now();
@@ -861,51 +885,66 @@ fn sys_scp(
         let mut remaining = costs.to_vec();
         let mut added = false;
         let mut saturated = vec![0u64; costs.len()];
-        for (c, pattern) in candidates.iter().enumerate() {
-            if done[c] {
-                continue;
-            }
-            if clock.passed() || limits.reached(|| own(&kept)).is_some() {
-                break 'restarts;
-            }
-            // A restart ends once its time is up, but only after it kept a pattern, so
-            // that every restart makes progress.
-            if added && restart_deadline.is_some_and(|d| Instant::now() >= d) {
-                continue 'restarts;
-            }
-            if kept.len() as u64 >= config.max_patterns {
-                break 'restarts;
-            }
-            let normalized = normalize_pattern(task, pattern)?;
-            if seen.contains(&normalized) {
-                done[c] = true;
-                continue;
-            }
-            let size = pattern_size(task, &normalized, MAX_PDB_SIZE).unwrap_or(u64::MAX);
-            if kept_size.saturating_add(size) > config.max_collection_size {
-                done[c] = true;
-                continue;
-            }
-            let Some(projection) = Projection::new(task, pattern, limits)? else {
-                done[c] = true;
-                continue;
-            };
-            let d = projection.distances(&remaining);
-            if d.iter().any(|&x| x != 0 && x != INF) {
-                saturated.iter_mut().for_each(|s| *s = 0);
-                projection.saturated_costs(&d, &mut saturated);
-                for (r, &s) in remaining.iter_mut().zip(&saturated) {
-                    *r -= s.min(*r);
+        let mut k = 0;
+        loop {
+            if k == levels.len() {
+                if k as u64 >= config.max_pattern_size || levels[k - 1].is_empty() {
+                    break;
                 }
-                done[c] = true;
-                seen.insert(normalized);
-                kept_size += size;
-                kept.push(projection);
-                added = true;
-            } else if d == projection.distances(costs) {
-                // Useless under the full costs too: never worth another look.
-                done[c] = true;
+                let (next, _) = grow(task, &predecessors, &levels[k - 1], max_pdb, &mut || {
+                    clock.passed()
+                });
+                done.push(vec![false; next.len()]);
+                levels.push(next);
             }
+            for c in 0..levels[k].len() {
+                if done[k][c] {
+                    continue;
+                }
+                if clock.passed() || limits.reached(|| own(&kept)).is_some() {
+                    break 'restarts;
+                }
+                // A restart ends once its time is up, but only after it kept a pattern,
+                // so that every restart makes progress.
+                if added && restart_deadline.is_some_and(|d| Instant::now() >= d) {
+                    continue 'restarts;
+                }
+                if kept.len() as u64 >= config.max_patterns {
+                    break 'restarts;
+                }
+                let pattern = &levels[k][c];
+                let normalized = normalize_pattern(task, pattern)?;
+                if seen.contains(&normalized) {
+                    done[k][c] = true;
+                    continue;
+                }
+                let size = pattern_size(task, &normalized, MAX_PDB_SIZE).unwrap_or(u64::MAX);
+                if kept_size.saturating_add(size) > config.max_collection_size {
+                    done[k][c] = true;
+                    continue;
+                }
+                let Some(projection) = Projection::new(task, pattern, limits)? else {
+                    done[k][c] = true;
+                    continue;
+                };
+                let d = projection.distances(&remaining);
+                if d.iter().any(|&x| x != 0 && x != INF) {
+                    saturated.iter_mut().for_each(|s| *s = 0);
+                    projection.saturated_costs(&d, &mut saturated);
+                    for (r, &s) in remaining.iter_mut().zip(&saturated) {
+                        *r -= s.min(*r);
+                    }
+                    done[k][c] = true;
+                    seen.insert(normalized);
+                    kept_size += size;
+                    kept.push(projection);
+                    added = true;
+                } else if d == projection.distances(costs) {
+                    // Useless under the full costs too: never worth another look.
+                    done[k][c] = true;
+                }
+            }
+            k += 1;
         }
         if !added {
             break;

@@ -46,8 +46,9 @@
 //! climb) and `sys_scp(...)`: the patterns of `systematic` in order of increasing size,
 //! each kept if its projection has a positive finite goal distance under the costs that
 //! the patterns kept before it leave (then those costs shrink by its saturated costs);
-//! after `max_time_per_restart` the costs are reset and the loop starts over with the
-//! patterns not kept yet.
+//! once `max_time_per_restart` has passed (and the restart kept a pattern) the costs are
+//! reset and the loop starts over with the patterns not kept yet. It ends when it has
+//! been through every size (`max_pattern_size` or until no pattern grows), or at a limit.
 //!
 //! Everything is deterministic for a fixed seed as long as no time limit is reached.
 //! Construction respects the run's limits: every phase stops at the deadline, the
@@ -946,9 +947,8 @@ fn sys_scp(
             }
             k += 1;
         }
-        if !added {
-            break;
-        }
+        // Every size has been seen: a restart comes only from the restart time.
+        break;
     }
     Ok(kept)
 }
@@ -1028,6 +1028,112 @@ mod tests {
             assert!(s.iter().zip(&costs).all(|(a, b)| a <= b), "round {round}");
             assert_eq!(p.distances(&s), d, "round {round}");
         }
+    }
+
+    /// Two counters, each stepped by its own operators, and one operator that moves
+    /// both: the single projections give 2 each, saturated cost partitioning their sum
+    /// (the shared operator's cost is not needed by either projection's distances).
+    fn two_counters() -> Task {
+        use crate::test_tasks::op;
+        use task::{Fact, Variable};
+        let var = |name: &str| Variable {
+            name: name.into(),
+            value_names: (0..3).map(|v| format!("{name}{v}")).collect(),
+        };
+        Task {
+            variables: vec![var("a"), var("b")],
+            mutexes: vec![],
+            initial_state: vec![0, 0],
+            goal: vec![Fact::new(VarId(0), 2), Fact::new(VarId(1), 2)],
+            operators: vec![
+                op("a01", &[(0, 0)], &[(0, 1)], 1),
+                op("a12", &[(0, 1)], &[(0, 2)], 1),
+                op("b01", &[(1, 0)], &[(1, 1)], 1),
+                op("b12", &[(1, 1)], &[(1, 2)], 1),
+                op("both", &[(0, 0), (1, 0)], &[(0, 2), (1, 2)], 5),
+            ],
+            use_costs: true,
+        }
+    }
+
+    #[test]
+    fn saturated_cost_partitioning_adds_what_the_maximum_cannot() {
+        let task = two_counters();
+        let config = ScpConfig {
+            abstractions: vec![PatternGenerator::Manual(vec![vec![0], vec![1]])],
+            ..ScpConfig::default()
+        };
+        let mut h = Scp::new(&task, &config, &no_limits()).unwrap();
+        assert_eq!(h.evaluate(&[0, 0]), Some(4));
+        assert_eq!(h.evaluate(&[1, 0]), Some(3));
+        assert_eq!(h.evaluate(&[2, 2]), Some(0));
+        assert_eq!(h.name(), "scp");
+        assert_eq!(h.statistics().projections, 2);
+        // The saturated costs of projection [0]: a01 and a12 at 1, `both` at 2 (it
+        // skips two steps of cost 1), b01 and b12 at 0.
+        let p = Projection::new(&task, &[0], &no_limits()).unwrap().unwrap();
+        let costs: Vec<u64> = task.operators.iter().map(|o| o.cost).collect();
+        let mut s = vec![0; costs.len()];
+        p.saturated_costs(&p.distances(&costs), &mut s);
+        assert_eq!(s, [1, 1, 0, 0, 2]);
+        // Sys-SCP keeps both goal variables (each useful under what the other leaves)
+        // and nothing larger (the pair adds no information once both are in).
+        let sys = ScpConfig {
+            abstractions: vec![PatternGenerator::SysScp(SysScpConfig::default())],
+            ..ScpConfig::default()
+        };
+        let mut h = Scp::new(&task, &sys, &no_limits()).unwrap();
+        let patterns: Vec<Vec<VarId>> = h.patterns().map(<[VarId]>::to_vec).collect();
+        assert_eq!(patterns, [vec![VarId(0)], vec![VarId(1)]]);
+        assert_eq!(h.evaluate(&[0, 0]), Some(4));
+    }
+
+    #[test]
+    fn construction_stops_at_the_limits_and_keeps_an_admissible_heuristic() {
+        let task = two_counters();
+        let config = ScpConfig {
+            abstractions: vec![PatternGenerator::SysScp(SysScpConfig::default())],
+            ..ScpConfig::default()
+        };
+        static CANCEL: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(true);
+        for limits in [
+            SearchLimits {
+                deadline: Some(Instant::now()),
+                ..SearchLimits::default()
+            },
+            SearchLimits {
+                cancel: Some(&CANCEL),
+                ..SearchLimits::default()
+            },
+            SearchLimits {
+                memory_limit_bytes: Some(1),
+                ..SearchLimits::default()
+            },
+        ] {
+            let mut h = Scp::new(&task, &config, &limits).unwrap();
+            assert_eq!(h.statistics().projections, 0, "{limits:?}");
+            assert_eq!(h.evaluate(&[0, 0]), Some(0));
+        }
+    }
+
+    #[test]
+    fn online_orders_are_added_at_the_interval_when_they_help() {
+        let task = two_counters();
+        let config = ScpConfig {
+            abstractions: vec![PatternGenerator::Manual(vec![vec![0], vec![1], vec![0, 1]])],
+            online_interval: Some(2),
+            ..ScpConfig::default()
+        };
+        let mut h = Scp::new(&task, &config, &no_limits()).unwrap();
+        assert_eq!(h.name(), "scp_online");
+        let before = h.statistics().orders_computed;
+        for state in [[0, 0], [1, 0], [0, 1], [1, 1], [2, 0]] {
+            h.evaluate(&state);
+        }
+        // Evaluations 1, 3 and 5 computed an order.
+        assert_eq!(h.statistics().orders_computed, before + 3);
+        // The pair alone is exact here: 4 from the start.
+        assert_eq!(h.evaluate(&[0, 0]), Some(4));
     }
 
     #[test]

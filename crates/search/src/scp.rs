@@ -978,7 +978,7 @@ impl Heuristic for Scp {
         if let Some(online) = &mut self.online {
             let due = online.evaluations.is_multiple_of(online.interval);
             online.evaluations += 1;
-            if due && !online.until.is_some_and(|u| Instant::now() >= u) {
+            if due && online.until.is_none_or(|u| Instant::now() < u) {
                 let order = self.order_for(state);
                 self.statistics.orders_computed += 1;
                 let value = order.value(&self.indices);

@@ -820,32 +820,9 @@ fn interpret_cpdbs(term: &Term) -> Result<HeuristicConfig, ConfigError> {
                 .collect::<Result<_, _>>()?,
         ),
         Some(Value::Term(t)) => match t.name.as_str() {
-            "manual_patterns" => {
-                let mut args = Args::new(t, &["patterns"])?;
-                let list = args
-                    .take("patterns")?
-                    .ok_or_else(|| ConfigError::MissingArgument {
-                        function: "manual_patterns".into(),
-                        argument: "patterns".into(),
-                    })?;
-                args.finish()?;
-                let Value::List(items) = list else {
-                    return Err(invalid("manual_patterns", "expected a list of patterns such as [[0, 1], [2]]"));
-                };
-                PatternCollectionConfig::Manual(
-                    items
-                        .iter()
-                        .map(|p| variables("manual_patterns", p))
-                        .collect::<Result<_, _>>()?,
-                )
-            }
+            "manual_patterns" => PatternCollectionConfig::Manual(manual_patterns(t)?),
             "systematic" => {
-                let mut args = Args::new(t, &["pattern_max_size"])?;
-                let size = match args.take("pattern_max_size")? {
-                    Some(v) => integer("systematic", v, false)?,
-                    None => 1,
-                };
-                args.finish()?;
+                let size = systematic_size(t)?;
                 if !(1..=2).contains(&size) {
                     return Err(invalid(
                         "systematic",
@@ -1012,30 +989,9 @@ fn interpret_abstraction(function: &str, value: &Value) -> Result<PatternGenerat
                 .collect::<Result<_, _>>()?,
         ),
         Some(Value::Term(t)) => match t.name.as_str() {
-            "manual_patterns" => {
-                let mut args = Args::new(t, &["patterns"])?;
-                let list = args.take("patterns")?;
-                args.finish()?;
-                let Some(Value::List(items)) = list else {
-                    return Err(invalid(
-                        "manual_patterns",
-                        "expected a list of patterns such as [[0, 1], [2]]",
-                    ));
-                };
-                PatternGenerator::Manual(
-                    items
-                        .iter()
-                        .map(|p| variables("manual_patterns", p))
-                        .collect::<Result<_, _>>()?,
-                )
-            }
+            "manual_patterns" => PatternGenerator::Manual(manual_patterns(t)?),
             "systematic" => {
-                let mut args = Args::new(t, &["pattern_max_size"])?;
-                let size = match args.take("pattern_max_size")? {
-                    Some(v) => integer("systematic", v, false)?,
-                    None => 1,
-                };
-                args.finish()?;
+                let size = systematic_size(t)?;
                 let size = u32::try_from(positive("systematic", "pattern_max_size", size)?)
                     .map_err(|_| invalid("systematic", "`pattern_max_size` is too large"))?;
                 PatternGenerator::Systematic(size)
@@ -1210,6 +1166,39 @@ fn write_scp(f: &mut fmt::Formatter<'_>, config: &ScpConfig) -> fmt::Result {
         options.push(format!("random_seed={}", config.random_seed));
     }
     write!(f, "{name}({})", options.join(", "))
+}
+
+/// `manual_patterns([[0, 1], [2]])`.
+fn manual_patterns(t: &Term) -> Result<Vec<Vec<u32>>, ConfigError> {
+    let mut args = Args::new(t, &["patterns"])?;
+    let list = args
+        .take("patterns")?
+        .ok_or_else(|| ConfigError::MissingArgument {
+            function: "manual_patterns".into(),
+            argument: "patterns".into(),
+        })?;
+    args.finish()?;
+    let Value::List(items) = list else {
+        return Err(invalid(
+            "manual_patterns",
+            "expected a list of patterns such as [[0, 1], [2]]",
+        ));
+    };
+    items
+        .iter()
+        .map(|p| variables("manual_patterns", p))
+        .collect()
+}
+
+/// The `pattern_max_size` of `systematic(...)` (default 1).
+fn systematic_size(t: &Term) -> Result<u64, ConfigError> {
+    let mut args = Args::new(t, &["pattern_max_size"])?;
+    let size = match args.take("pattern_max_size")? {
+        Some(v) => integer("systematic", v, false)?,
+        None => 1,
+    };
+    args.finish()?;
+    Ok(size)
 }
 
 fn invalid(function: &str, message: &str) -> ConfigError {

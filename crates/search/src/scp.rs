@@ -34,12 +34,13 @@
 //! estimate divided by the average operator cost); the initial state and then each
 //! sample in turn gets a greedy order, which is kept if it raises the estimate of some
 //! sample above that of the orders kept so far. Without `diversify` every order is kept.
-//! Both stop at `max_orders` kept orders, after the last sample, or at `max_time`.
+//! Both stop at `max_orders` kept orders, after the last sample, or at `max_time`
+//! (counted from the end of pattern generation, as Scorpion's).
 //!
 //! *Online* (`scp_online(..., interval=N)`): one order for the initial state at
 //! construction, then during the search, every `N`-th evaluated state gets a greedy
 //! order, kept if it raises that state's estimate, until `max_time` has passed since
-//! construction began.
+//! the projections were built.
 //!
 //! *Pattern generators* (`projections(...)`): `systematic(k)` (goal variables grown by
 //! causal-graph predecessors, see [`systematic_up_to`]), `hillclimbing(...)` (the iPDB
@@ -131,7 +132,7 @@ pub struct ScpConfig {
     pub orders_seed: u32,
     /// Most orders kept (`u64::MAX`: no limit; offline only).
     pub max_orders: u64,
-    /// Time limit of the order generation (online: since construction began).
+    /// Time limit of the order generation, from the end of pattern generation.
     pub max_time: Option<Duration>,
     /// Keep an order only if it raises the estimate of a sample (offline only).
     pub diversify: bool,
@@ -666,16 +667,17 @@ impl Scp {
             online: None,
             statistics,
         };
-        let deadline = phase_deadline(start, config.max_time, limits.deadline);
-        let out_of_time = |scp: &Scp| {
-            limits.cancelled()
-                || deadline.is_some_and(|d| Instant::now() >= d)
-                || limits
-                    .reached(|| scp.orders.iter().map(Order::bytes).sum())
-                    .is_some()
+        // `max_time` counts from here: the time of the orders, not of the patterns.
+        let deadline = phase_deadline(Instant::now(), config.max_time, limits.deadline);
+        let limit_reached = |scp: &Scp| {
+            limits
+                .reached(|| scp.orders.iter().map(Order::bytes).sum())
+                .is_some()
         };
-        // The initial state's order, always (unless the limits have passed).
-        if !out_of_time(&scp) {
+        let out_of_time =
+            |scp: &Scp| deadline.is_some_and(|d| Instant::now() >= d) || limit_reached(scp);
+        // The initial state's order, always (unless the run's limits have passed).
+        if !limit_reached(&scp) {
             let order = scp.order_for(&task.initial_state);
             scp.statistics.orders_computed += 1;
             scp.orders.push(order);

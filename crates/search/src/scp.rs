@@ -159,12 +159,12 @@ impl Default for ScpConfig {
     }
 }
 
-/// The interesting patterns of at most `max_size` variables, grown naively: of one
-/// variable the goal variables; of `k + 1` every pattern of `k` with one causal-graph
-/// predecessor of one of its variables added (a variable with a precondition on it or
-/// an effect together with it in an operator that has an effect on the pattern's
-/// variable). Each pattern's variables are connected in the causal graph and reach a
-/// goal variable. Size by size, each size sorted; for sizes 1 and 2 these are exactly
+/// The interesting patterns of at most `max_size` variables, grown as iPDB's climb
+/// grows them: of one variable the goal variables; of `k + 1` every pattern of `k` with
+/// one neighbour of one of its variables added: a causal-graph predecessor (a variable
+/// with a precondition or an effect in an operator that has an effect on the pattern's
+/// variable) or a goal variable among its successors. Each pattern's variables are
+/// connected in the causal graph and reach a goal variable. Size by size, each size sorted; for sizes 1 and 2 these are exactly
 /// `cpdbs`' `systematic` patterns. Patterns whose projection would exceed
 /// `max_pdb_size` are left out (and not grown). Stops early, with what it has, when
 /// `stop()` says so (checked per pattern grown).
@@ -246,14 +246,23 @@ fn fits(task: &Task, pattern: &[u32], max_pdb_size: u64) -> bool {
 }
 
 /// For each variable `v`, the variables with a precondition or an effect in an operator
-/// that has an effect on `v`, `v` left out; sorted.
+/// that has an effect on `v`, and the goal variables among `v`'s successors (effects of
+/// operators with a precondition or an effect on `v`, as iPDB's climb adds them), `v`
+/// left out; sorted.
 fn causal_predecessors(task: &Task) -> Vec<Vec<u32>> {
+    let mut is_goal = vec![false; task.variables.len()];
+    for f in &task.goal {
+        is_goal[f.var.index()] = true;
+    }
     let mut pred: Vec<Vec<u32>> = vec![Vec::new(); task.variables.len()];
     for op in &task.operators {
         for e in &op.effects {
             for f in op.preconditions.iter().chain(&op.effects) {
                 if f.var != e.var {
                     pred[e.var.index()].push(f.var.0);
+                    if is_goal[e.var.index()] {
+                        pred[f.var.index()].push(e.var.0);
+                    }
                 }
             }
         }

@@ -176,6 +176,8 @@ pub struct PlanArgs {
     #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
     pub files: Vec<PathBuf>,
     /// The search, e.g. `astar(blind())`, `astar(lmcut(), pruning=atom_centric_stubborn_sets())`.
+    /// Heuristics: blind, hmax, lmcut, pdb, ipdb, cpdbs, and saturated cost partitioning
+    /// `scp([projections(sys_scp())], orders=greedy_orders())` or `scp_online([...], interval=N)`.
     #[arg(long, value_name = "SEARCH", required_unless_present = "alias")]
     pub search: Option<String>,
     /// A named configuration, e.g. `seq-opt-lmcut`.

@@ -21,6 +21,7 @@ use crate::pdb::build_collection_within;
 use crate::pruning::{
     AtomSelectionStrategy, LimitedPruningConfig, PruningConfig, Ratio, StubbornSetsConfig,
 };
+use crate::scp::{PatternGenerator, Scp, ScpConfig, SysScpConfig};
 
 /// The search engines demoplan runs.
 pub const SEARCH_ENGINES: &[&str] = &["astar"];
@@ -41,20 +42,27 @@ pub enum HeuristicName {
     Ipdb,
     /// `cpdbs()`.
     Cpdbs,
+    /// `scp()`.
+    Scp,
+    /// `scp_online()`.
+    ScpOnline,
 }
 
 impl HeuristicName {
     /// Every heuristic, in the order error messages list them.
-    pub const ALL: [HeuristicName; 6] = [
+    pub const ALL: [HeuristicName; 8] = [
         HeuristicName::Blind,
         HeuristicName::HMax,
         HeuristicName::LmCut,
         HeuristicName::Pdb,
         HeuristicName::Ipdb,
         HeuristicName::Cpdbs,
+        HeuristicName::Scp,
+        HeuristicName::ScpOnline,
     ];
 
-    /// Its name in search strings: `blind`, `hmax`, `lmcut`, `pdb`, `ipdb`, `cpdbs`.
+    /// Its name in search strings: `blind`, `hmax`, `lmcut`, `pdb`, `ipdb`, `cpdbs`,
+    /// `scp`, `scp_online`.
     pub fn name(self) -> &'static str {
         match self {
             HeuristicName::Blind => "blind",
@@ -63,6 +71,8 @@ impl HeuristicName {
             HeuristicName::Pdb => "pdb",
             HeuristicName::Ipdb => "ipdb",
             HeuristicName::Cpdbs => "cpdbs",
+            HeuristicName::Scp => "scp",
+            HeuristicName::ScpOnline => "scp_online",
         }
     }
 
@@ -134,6 +144,10 @@ pub enum HeuristicConfig {
         /// pruning).
         max_time_dominance_pruning: Option<Duration>,
     },
+    /// Saturated cost partitioning over projections ([`Scp`]): `scp([projections(
+    /// sys_scp())], orders=greedy_orders())`, or `scp_online(...)` when
+    /// `online_interval` is set.
+    Scp(ScpConfig),
 }
 
 /// A pattern collection generator of `cpdbs(patterns=...)`.
@@ -160,6 +174,8 @@ impl HeuristicConfig {
             HeuristicConfig::Pdb { .. } => HeuristicName::Pdb,
             HeuristicConfig::Ipdb(_) => HeuristicName::Ipdb,
             HeuristicConfig::Cpdbs { .. } => HeuristicName::Cpdbs,
+            HeuristicConfig::Scp(c) if c.online_interval.is_some() => HeuristicName::ScpOnline,
+            HeuristicConfig::Scp(_) => HeuristicName::Scp,
         }
     }
 
@@ -180,6 +196,8 @@ impl HeuristicConfig {
     /// rejecting a candidate whose database does not fit, and keeps the collection found
     /// so far; the clique enumeration and dominance pruning after it stop at the
     /// deadline, keeping the cliques found (any set of additive cliques is admissible).
+    /// `scp()` and `scp_online()` stop each phase (patterns, projections, orders) at the
+    /// limits likewise and keep what they have.
     /// Then the search reports a limit that has passed at its first check.
     pub fn build_with_limits(
         &self,
@@ -196,6 +214,7 @@ impl HeuristicConfig {
                 Err(limit) => return Ok(Built::Stopped(limit)),
             },
             HeuristicConfig::Ipdb(config) => Box::new(ipdb(task, config, limits)?),
+            HeuristicConfig::Scp(config) => Box::new(Scp::new(task, config, limits)?),
             HeuristicConfig::Cpdbs {
                 patterns,
                 max_time_dominance_pruning,
@@ -312,6 +331,7 @@ impl fmt::Display for HeuristicConfig {
                 }
                 write!(f, ")")
             }
+            HeuristicConfig::Scp(config) => write_scp(f, config),
             other => write!(f, "{}()", other.name()),
         }
     }
@@ -568,6 +588,9 @@ fn interpret_heuristic(value: &Value) -> Result<HeuristicConfig, ConfigError> {
         HeuristicName::Pdb => return interpret_pdb(term),
         HeuristicName::Ipdb => return Ok(HeuristicConfig::Ipdb(interpret_ipdb(term, true)?)),
         HeuristicName::Cpdbs => return interpret_cpdbs(term),
+        HeuristicName::Scp | HeuristicName::ScpOnline => {
+            return Ok(HeuristicConfig::Scp(interpret_scp(term)?))
+        }
     };
     Args::new(term, &[])?.finish()?;
     Ok(heuristic)
@@ -771,15 +794,7 @@ fn interpret_ipdb(term: &Term, with_pruning: bool) -> Result<IpdbConfig, ConfigE
     }
     if let Some(v) = args.take("random_seed")? {
         // Fast Downward's bounds: -1 (its global generator, seeded 2011) or an int.
-        config.random_seed = match word(v) {
-            Some("-1") => crate::ipdb::DEFAULT_SEED,
-            _ => u32::try_from(integer(function, v, false)?)
-                .ok()
-                .filter(|&seed| seed <= i32::MAX as u32)
-                .ok_or_else(|| {
-                    invalid(function, "`random_seed` must be -1 or at most 2147483647")
-                })?,
-        };
+        config.random_seed = seed(function, v)?;
     }
     if let Some(v) = args.take("max_generated_patterns")? {
         config.max_generated_patterns = match integer(function, v, true)? {
@@ -812,32 +827,9 @@ fn interpret_cpdbs(term: &Term) -> Result<HeuristicConfig, ConfigError> {
                 .collect::<Result<_, _>>()?,
         ),
         Some(Value::Term(t)) => match t.name.as_str() {
-            "manual_patterns" => {
-                let mut args = Args::new(t, &["patterns"])?;
-                let list = args
-                    .take("patterns")?
-                    .ok_or_else(|| ConfigError::MissingArgument {
-                        function: "manual_patterns".into(),
-                        argument: "patterns".into(),
-                    })?;
-                args.finish()?;
-                let Value::List(items) = list else {
-                    return Err(invalid("manual_patterns", "expected a list of patterns such as [[0, 1], [2]]"));
-                };
-                PatternCollectionConfig::Manual(
-                    items
-                        .iter()
-                        .map(|p| variables("manual_patterns", p))
-                        .collect::<Result<_, _>>()?,
-                )
-            }
+            "manual_patterns" => PatternCollectionConfig::Manual(manual_patterns(t)?),
             "systematic" => {
-                let mut args = Args::new(t, &["pattern_max_size"])?;
-                let size = match args.take("pattern_max_size")? {
-                    Some(v) => integer("systematic", v, false)?,
-                    None => 1,
-                };
-                args.finish()?;
+                let size = systematic_size(t)?;
                 if !(1..=2).contains(&size) {
                     return Err(invalid(
                         "systematic",
@@ -865,6 +857,355 @@ fn interpret_cpdbs(term: &Term) -> Result<HeuristicConfig, ConfigError> {
         patterns,
         max_time_dominance_pruning,
     })
+}
+
+/// The pattern generators of `projections(...)`.
+const PATTERN_GENERATORS: &str = "manual_patterns, systematic, hillclimbing, sys_scp";
+
+/// `scp([projections(...), ...], orders=greedy_orders(), max_orders=..., max_time=...,
+/// diversify=..., samples=..., random_seed=...)` or `scp_online([...], orders=...,
+/// interval=..., max_time=..., random_seed=...)`, with Scorpion's names and defaults.
+fn interpret_scp(term: &Term) -> Result<ScpConfig, ConfigError> {
+    let function = term.name.as_str();
+    let online = function == "scp_online";
+    let params: &[&str] = if online {
+        &[
+            "abstractions",
+            "orders",
+            "interval",
+            "max_time",
+            "random_seed",
+        ]
+    } else {
+        &[
+            "abstractions",
+            "orders",
+            "max_orders",
+            "max_time",
+            "diversify",
+            "samples",
+            "random_seed",
+        ]
+    };
+    let mut args = Args::new(term, params)?;
+    let mut config = ScpConfig::default();
+    let abstractions = args
+        .take("abstractions")?
+        .ok_or_else(|| ConfigError::MissingArgument {
+            function: function.into(),
+            argument: "abstractions".into(),
+        })?;
+    let Value::List(items) = abstractions else {
+        return Err(invalid(
+            function,
+            "`abstractions` must be a list such as [projections(sys_scp())]",
+        ));
+    };
+    config.abstractions = items
+        .iter()
+        .map(|item| interpret_abstraction(function, item))
+        .collect::<Result<_, _>>()?;
+    if let Some(v) = args.take("orders")? {
+        let Value::Term(t) = v else {
+            return Err(invalid(function, "`orders` must be greedy_orders(...)"));
+        };
+        if t.name != "greedy_orders" {
+            return Err(invalid(
+                function,
+                &format!(
+                    "unknown order generator `{}` (known: greedy_orders)",
+                    t.name
+                ),
+            ));
+        }
+        let mut args = Args::new(t, &["random_seed"])?;
+        if let Some(v) = args.take("random_seed")? {
+            config.orders_seed = seed("greedy_orders", v)?;
+        }
+        args.finish()?;
+    }
+    if let Some(v) = args.take("max_time")? {
+        config.max_time = seconds(function, v)?;
+    }
+    if let Some(v) = args.take("random_seed")? {
+        config.random_seed = seed(function, v)?;
+    }
+    if online {
+        let interval = match args.take("interval")? {
+            Some(v) => positive(function, "interval", integer(function, v, false)?)?,
+            None => 10_000,
+        };
+        config.online_interval = Some(interval);
+    } else {
+        if let Some(v) = args.take("max_orders")? {
+            config.max_orders = positive(function, "max_orders", integer(function, v, true)?)?;
+        }
+        if let Some(v) = args.take("diversify")? {
+            config.diversify = boolean(function, "diversify", v)?;
+        }
+        if let Some(v) = args.take("samples")? {
+            let n = positive(function, "samples", integer(function, v, false)?)?;
+            config.samples =
+                u32::try_from(n).map_err(|_| invalid(function, "`samples` is too large"))?;
+        }
+    }
+    args.finish()?;
+    Ok(config)
+}
+
+/// `projections(systematic(2))` and the other pattern generators.
+fn interpret_abstraction(function: &str, value: &Value) -> Result<PatternGenerator, ConfigError> {
+    let term = match value {
+        Value::Term(t) if t.name == "projections" => t,
+        Value::Term(t) if t.name == "cartesian" => {
+            return Err(invalid(
+                function,
+                "Cartesian abstractions (`cartesian`) are not supported; use projections(...)",
+            ))
+        }
+        Value::Term(t) => {
+            return Err(invalid(
+                function,
+                &format!(
+                    "unknown abstraction generator `{}` (known: projections)",
+                    t.name
+                ),
+            ))
+        }
+        Value::List(_) => {
+            return Err(invalid(
+                function,
+                "an abstraction must be projections(...), not a list",
+            ))
+        }
+    };
+    let mut args = Args::new(term, &["patterns"])?;
+    let patterns = args.take("patterns")?;
+    args.finish()?;
+    let generator = match patterns {
+        None => {
+            return Err(ConfigError::MissingArgument {
+                function: "projections".into(),
+                argument: "patterns".into(),
+            })
+        }
+        Some(Value::List(items)) => PatternGenerator::Manual(
+            items
+                .iter()
+                .map(|p| variables("projections", p))
+                .collect::<Result<_, _>>()?,
+        ),
+        Some(Value::Term(t)) => match t.name.as_str() {
+            "manual_patterns" => PatternGenerator::Manual(manual_patterns(t)?),
+            "systematic" => {
+                let size = systematic_size(t)?;
+                let size = u32::try_from(positive("systematic", "pattern_max_size", size)?)
+                    .map_err(|_| invalid("systematic", "`pattern_max_size` is too large"))?;
+                PatternGenerator::Systematic(size)
+            }
+            "hillclimbing" => PatternGenerator::HillClimbing(interpret_ipdb(t, false)?),
+            "sys_scp" => PatternGenerator::SysScp(interpret_sys_scp(t)?),
+            name => {
+                return Err(invalid(
+                    "projections",
+                    &format!(
+                    "unknown pattern collection generator `{name}` (known: {PATTERN_GENERATORS})"
+                ),
+                ))
+            }
+        },
+    };
+    Ok(generator)
+}
+
+/// `sys_scp(max_pattern_size=..., max_pdb_size=..., max_collection_size=...,
+/// max_patterns=..., max_time=..., max_time_per_restart=...)`.
+fn interpret_sys_scp(term: &Term) -> Result<SysScpConfig, ConfigError> {
+    let f = "sys_scp";
+    let mut args = Args::new(
+        term,
+        &[
+            "max_pattern_size",
+            "max_pdb_size",
+            "max_collection_size",
+            "max_patterns",
+            "max_time",
+            "max_time_per_restart",
+        ],
+    )?;
+    let mut config = SysScpConfig::default();
+    for (name, slot) in [
+        ("max_pattern_size", &mut config.max_pattern_size),
+        ("max_pdb_size", &mut config.max_pdb_size),
+        ("max_collection_size", &mut config.max_collection_size),
+        ("max_patterns", &mut config.max_patterns),
+    ] {
+        if let Some(v) = args.take(name)? {
+            *slot = positive(f, name, integer(f, v, true)?)?;
+        }
+    }
+    if let Some(v) = args.take("max_time")? {
+        config.max_time = seconds(f, v)?;
+    }
+    if let Some(v) = args.take("max_time_per_restart")? {
+        config.max_time_per_restart = seconds(f, v)?;
+    }
+    args.finish()?;
+    Ok(config)
+}
+
+/// `true` or `false`.
+fn boolean(function: &str, param: &str, value: &Value) -> Result<bool, ConfigError> {
+    match word(value) {
+        Some("true") => Ok(true),
+        Some("false") => Ok(false),
+        _ => Err(invalid(
+            function,
+            &format!("`{param}` must be true or false, not {}", shown(value)),
+        )),
+    }
+}
+
+/// A seed as Fast Downward bounds it: -1 (the default, [`crate::ipdb::DEFAULT_SEED`])
+/// or an integer up to 2147483647.
+fn seed(function: &str, value: &Value) -> Result<u32, ConfigError> {
+    match word(value) {
+        Some("-1") => Ok(crate::ipdb::DEFAULT_SEED),
+        _ => u32::try_from(integer(function, value, false)?)
+            .ok()
+            .filter(|&seed| seed <= i32::MAX as u32)
+            .ok_or_else(|| invalid(function, "`random_seed` must be -1 or at most 2147483647")),
+    }
+}
+
+/// The canonical form of `scp(...)` or `scp_online(...)`: options at their defaults
+/// left out.
+fn write_scp(f: &mut fmt::Formatter<'_>, config: &ScpConfig) -> fmt::Result {
+    let default = ScpConfig::default();
+    let name = if config.online_interval.is_some() {
+        "scp_online"
+    } else {
+        "scp"
+    };
+    let int = |v: u64| {
+        if v == u64::MAX {
+            "infinity".to_string()
+        } else {
+            v.to_string()
+        }
+    };
+    let secs =
+        |t: Option<Duration>| t.map_or("infinity".to_string(), |t| t.as_secs_f64().to_string());
+    let mut items = Vec::new();
+    for g in &config.abstractions {
+        let inner = match g {
+            PatternGenerator::Manual(patterns) => {
+                let lists: Vec<String> = patterns.iter().map(|p| List(p).to_string()).collect();
+                format!("manual_patterns([{}])", lists.join(", "))
+            }
+            PatternGenerator::Systematic(k) => format!("systematic({k})"),
+            PatternGenerator::HillClimbing(c) => {
+                struct Options<'a>(&'a IpdbConfig);
+                impl fmt::Display for Options<'_> {
+                    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                        write_ipdb_options(f, self.0, false)
+                    }
+                }
+                format!("hillclimbing({})", Options(c))
+            }
+            PatternGenerator::SysScp(c) => {
+                let d = SysScpConfig::default();
+                let mut o = Vec::new();
+                for (n, a, b) in [
+                    ("max_pattern_size", c.max_pattern_size, d.max_pattern_size),
+                    ("max_pdb_size", c.max_pdb_size, d.max_pdb_size),
+                    (
+                        "max_collection_size",
+                        c.max_collection_size,
+                        d.max_collection_size,
+                    ),
+                    ("max_patterns", c.max_patterns, d.max_patterns),
+                ] {
+                    if a != b {
+                        o.push(format!("{n}={}", int(a)));
+                    }
+                }
+                if c.max_time != d.max_time {
+                    o.push(format!("max_time={}", secs(c.max_time)));
+                }
+                if c.max_time_per_restart != d.max_time_per_restart {
+                    o.push(format!(
+                        "max_time_per_restart={}",
+                        secs(c.max_time_per_restart)
+                    ));
+                }
+                format!("sys_scp({})", o.join(", "))
+            }
+        };
+        items.push(format!("projections({inner})"));
+    }
+    let mut options = vec![format!("[{}]", items.join(", "))];
+    if config.orders_seed != default.orders_seed {
+        options.push(format!(
+            "orders=greedy_orders(random_seed={})",
+            config.orders_seed
+        ));
+    }
+    if let Some(interval) = config.online_interval {
+        if interval != 10_000 {
+            options.push(format!("interval={interval}"));
+        }
+    } else {
+        if config.max_orders != default.max_orders {
+            options.push(format!("max_orders={}", int(config.max_orders)));
+        }
+        if config.diversify != default.diversify {
+            options.push(format!("diversify={}", config.diversify));
+        }
+        if config.samples != default.samples {
+            options.push(format!("samples={}", config.samples));
+        }
+    }
+    if config.max_time != default.max_time {
+        options.push(format!("max_time={}", secs(config.max_time)));
+    }
+    if config.random_seed != default.random_seed {
+        options.push(format!("random_seed={}", config.random_seed));
+    }
+    write!(f, "{name}({})", options.join(", "))
+}
+
+/// `manual_patterns([[0, 1], [2]])`.
+fn manual_patterns(t: &Term) -> Result<Vec<Vec<u32>>, ConfigError> {
+    let mut args = Args::new(t, &["patterns"])?;
+    let list = args
+        .take("patterns")?
+        .ok_or_else(|| ConfigError::MissingArgument {
+            function: "manual_patterns".into(),
+            argument: "patterns".into(),
+        })?;
+    args.finish()?;
+    let Value::List(items) = list else {
+        return Err(invalid(
+            "manual_patterns",
+            "expected a list of patterns such as [[0, 1], [2]]",
+        ));
+    };
+    items
+        .iter()
+        .map(|p| variables("manual_patterns", p))
+        .collect()
+}
+
+/// The `pattern_max_size` of `systematic(...)` (default 1).
+fn systematic_size(t: &Term) -> Result<u64, ConfigError> {
+    let mut args = Args::new(t, &["pattern_max_size"])?;
+    let size = match args.take("pattern_max_size")? {
+        Some(v) => integer("systematic", v, false)?,
+        None => 1,
+    };
+    args.finish()?;
+    Ok(size)
 }
 
 fn invalid(function: &str, message: &str) -> ConfigError {
@@ -1596,13 +1937,166 @@ mod tests {
     }
 
     #[test]
+    fn saturated_cost_partitioning_strings() {
+        let h = |s: &str| match ok(s).heuristic {
+            HeuristicConfig::Scp(c) => c,
+            other => panic!("{s}: {other:?}"),
+        };
+        let sys = PatternGenerator::SysScp(SysScpConfig::default());
+        assert_eq!(
+            h("astar(scp([projections(sys_scp())], orders=greedy_orders()))"),
+            ScpConfig {
+                abstractions: vec![sys.clone()],
+                ..ScpConfig::default()
+            }
+        );
+        let full = h(
+            "astar(scp(abstractions=[projections(sys_scp(max_pattern_size=3, \
+             max_pdb_size=1k, max_collection_size=10k, max_patterns=20, max_time=5, \
+             max_time_per_restart=1)), projections(systematic(3)), \
+             projections(hillclimbing(max_time=2)), projections([[0, 1]])], \
+             orders=greedy_orders(random_seed=4), max_orders=7, max_time=9, \
+             diversify=false, samples=50, random_seed=-1))",
+        );
+        assert_eq!(
+            full,
+            ScpConfig {
+                abstractions: vec![
+                    PatternGenerator::SysScp(SysScpConfig {
+                        max_pattern_size: 3,
+                        max_pdb_size: 1000,
+                        max_collection_size: 10_000,
+                        max_patterns: 20,
+                        max_time: Some(Duration::from_secs(5)),
+                        max_time_per_restart: Some(Duration::from_secs(1)),
+                    }),
+                    PatternGenerator::Systematic(3),
+                    PatternGenerator::HillClimbing(IpdbConfig {
+                        max_time: Some(Duration::from_secs(2)),
+                        ..IpdbConfig::default()
+                    }),
+                    PatternGenerator::Manual(vec![vec![0, 1]]),
+                ],
+                orders_seed: 4,
+                max_orders: 7,
+                max_time: Some(Duration::from_secs(9)),
+                diversify: false,
+                samples: 50,
+                random_seed: crate::ipdb::DEFAULT_SEED,
+                online_interval: None,
+            }
+        );
+        let online = h("astar(scp_online([projections(systematic(2))], interval=10K))");
+        assert_eq!(online.online_interval, Some(10_000));
+        assert_eq!(
+            ok("astar(scp_online([projections(systematic(2))]))")
+                .heuristic
+                .name(),
+            "scp_online"
+        );
+        // Canonical strings parse back to the same configuration.
+        for (given, canonical) in [
+            (
+                "astar(scp([projections(sys_scp())], orders=greedy_orders()))",
+                "astar(scp([projections(sys_scp())]))",
+            ),
+            (
+                "astar(scp([projections(systematic(2)), projections(manual_patterns([[0,1],[2]]))], max_orders=3, diversify=false, samples=9, max_time=infinity, random_seed=5))",
+                "astar(scp([projections(systematic(2)), projections(manual_patterns([[0, 1], [2]]))], max_orders=3, diversify=false, samples=9, max_time=infinity, random_seed=5))",
+            ),
+            (
+                "astar(scp_online([projections(hillclimbing(max_time=1)), projections(sys_scp(max_time=3, max_pattern_size=2))], orders=greedy_orders(random_seed=1), interval=100))",
+                "astar(scp_online([projections(hillclimbing(max_time=1)), projections(sys_scp(max_pattern_size=2, max_time=3))], orders=greedy_orders(random_seed=1), interval=100))",
+            ),
+        ] {
+            let config = ok(given);
+            assert_eq!(config.to_string(), canonical);
+            assert_eq!(ok(canonical), config);
+        }
+    }
+
+    #[test]
+    fn saturated_cost_partitioning_errors_name_the_option() {
+        for (s, message) in [
+            ("astar(scp())", "`scp` needs the argument `abstractions`"),
+            (
+                "astar(scp(projections(sys_scp())))",
+                "`scp`: `abstractions` must be a list such as [projections(sys_scp())]",
+            ),
+            (
+                "astar(scp([cartesian()]))",
+                "`scp`: Cartesian abstractions (`cartesian`) are not supported; use projections(...)",
+            ),
+            (
+                "astar(scp([pdbs()]))",
+                "`scp`: unknown abstraction generator `pdbs` (known: projections)",
+            ),
+            (
+                "astar(scp([projections(genetic())]))",
+                "`projections`: unknown pattern collection generator `genetic` (known: manual_patterns, systematic, hillclimbing, sys_scp)",
+            ),
+            ("astar(scp([projections()]))", "`projections` needs the argument `patterns`"),
+            (
+                "astar(scp([projections(sys_scp(max_pdb_size=0))]))",
+                "`sys_scp`: `max_pdb_size` must be positive",
+            ),
+            (
+                "astar(scp([projections(sys_scp(max_size=3))]))",
+                "`sys_scp` does not take the argument `max_size=`",
+            ),
+            (
+                "astar(scp([projections(systematic(0))]))",
+                "`systematic`: `pattern_max_size` must be positive",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], orders=random_orders()))",
+                "`scp`: unknown order generator `random_orders` (known: greedy_orders)",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], orders=greedy_orders(dynamic=true)))",
+                "`greedy_orders` does not take the argument `dynamic=`",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], diversify=maybe))",
+                "`scp`: `diversify` must be true or false, not `maybe`",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], max_orders=0))",
+                "`scp`: `max_orders` must be positive",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], max_time=soon))",
+                "`scp`: `soon` is not a number of seconds",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], interval=5))",
+                "`scp` does not take the argument `interval=`",
+            ),
+            (
+                "astar(scp_online([projections(sys_scp())], max_orders=5))",
+                "`scp_online` does not take the argument `max_orders=`",
+            ),
+            (
+                "astar(scp_online([projections(sys_scp())], interval=0))",
+                "`scp_online`: `interval` must be positive",
+            ),
+            (
+                "astar(scp([projections(sys_scp())], random_seed=3000000000))",
+                "`scp`: `random_seed` must be -1 or at most 2147483647",
+            ),
+        ] {
+            assert_eq!(err(s), message, "{s}");
+        }
+    }
+
+    #[test]
     fn the_full_message_lists_known_names() {
         let e = parse_search("astar(ff())").unwrap_err();
         assert_eq!(
             e.to_string(),
             "unknown heuristic `ff`\n\
              known search engines: astar\n\
-             known heuristics: blind, hmax, lmcut, pdb, ipdb, cpdbs"
+             known heuristics: blind, hmax, lmcut, pdb, ipdb, cpdbs, scp, scp_online"
         );
     }
 
@@ -1677,6 +2171,8 @@ mod tests {
             "cpdbs(systematic(2))",
             "cpdbs([[0], []])",
             "cpdbs(hillclimbing())",
+            "scp([projections(sys_scp())])",
+            "scp_online([projections(systematic(2)), projections([[0]])], interval=1)",
         ];
         let mut kinds = Vec::new();
         for config in configs {

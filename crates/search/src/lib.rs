@@ -12,6 +12,8 @@
 //!   search over regression operators), [`CanonicalPdbs`] (the canonical heuristic over a
 //!   collection) and [`ipdb`] (the collection chosen by hill climbing, Fast Downward's
 //!   `ipdb()`), with what building them did in [`PdbStatistics`];
+//! - saturated cost partitioning over projections: [`Scp`] (`scp(...)`,
+//!   `scp_online(...)`, configured by [`ScpConfig`]), with Sys-SCP pattern selection;
 //! - [`astar`]: eager A* with reopening, returning a [`SearchResult`] (an [`Outcome`] and
 //!   Fast Downward-style [`Statistics`]) under [`SearchLimits`], reporting each new
 //!   f-layer to an optional observer;
@@ -73,6 +75,7 @@ mod pdb;
 mod plan;
 mod pruning;
 mod radix_heap;
+mod scp;
 mod segmented;
 pub mod state;
 mod successor;
@@ -101,6 +104,9 @@ pub use plan::{replay, Plan, ReplayError};
 pub use pruning::{
     AtomSelectionStrategy, LimitedPruningConfig, Pruning, PruningConfig, PruningStatistics, Ratio,
     RatioCheck, StubbornSetsConfig,
+};
+pub use scp::{
+    systematic_up_to, PatternGenerator, Projection, Scp, ScpConfig, ScpStatistics, SysScpConfig,
 };
 pub use state::{StateId, StatePacker, StateRegistry};
 pub use successor::SuccessorGenerator;

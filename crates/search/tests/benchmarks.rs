@@ -142,6 +142,52 @@ fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
     }
 }
 
+/// Saturated cost partitioning (Sys-SCP patterns with diversified orders, systematic
+/// patterns with online orders) keeps A* optimal on real tasks, and its initial estimate
+/// is at least that of `cpdbs(systematic(1))`'s best single pattern and at most the
+/// optimum. Limits are small, to keep the test quick in the test profile.
+#[test]
+fn saturated_cost_partitioning_reaches_the_optimum_on_benchmark_instances() {
+    let configs = [
+        "astar(scp([projections(sys_scp(max_pdb_size=20k, max_collection_size=200k, max_time=2))], orders=greedy_orders(), samples=100))",
+        "astar(scp_online([projections(systematic(2))], interval=1000))",
+    ];
+    for &(domain, instance) in &SMALL_INSTANCES {
+        let (task, optimum) = translated_with_optimum(domain, instance);
+        for config in configs {
+            let config = parse_search(config).unwrap();
+            let mut h = config
+                .heuristic
+                .build_with_limits(&task, &SearchLimits::default())
+                .unwrap()
+                .into_heuristic()
+                .unwrap();
+            let goal_vars: Vec<u32> = task.goal.iter().map(|f| f.var.0).collect();
+            let single = goal_vars
+                .iter()
+                .filter_map(|&v| {
+                    search::PatternDatabase::new(&task, &[v])
+                        .unwrap()
+                        .value(&task.initial_state)
+                })
+                .max()
+                .unwrap_or(0);
+            let result = astar(&task, &mut h, &SearchLimits::default(), None).unwrap();
+            let Outcome::Solved(plan) = result.outcome else {
+                panic!("{domain}/{instance} {config}: {:?}", result.outcome)
+            };
+            assert_eq!(plan.cost, optimum, "{domain}/{instance} {config}");
+            let h0 = result.statistics.initial_h.unwrap();
+            assert!(h0 <= optimum, "{domain}/{instance} {config}: h = {h0}");
+            assert!(
+                h0 >= single,
+                "{domain}/{instance} {config}: h = {h0} < {single}"
+            );
+            assert!(task.is_goal(&search::replay(&task, &plan.operators).unwrap()));
+        }
+    }
+}
+
 /// With the same translation (Fast Downward's variables and operators in its order) and
 /// the same tie-breaking, `astar(lmcut())` expands as many states as Fast Downward 26.6's
 /// does (counts from its logs): the comparison of the two planners in `bench/compare-fd`

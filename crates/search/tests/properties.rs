@@ -11,8 +11,9 @@ mod common;
 use common::tasks;
 use search::{
     astar, astar_with_pruning, ipdb, parse_search, replay, AtomSelectionStrategy, Blind,
-    CanonicalPdbs, HMax, Heuristic, IpdbConfig, LimitedPruningConfig, LmCut, Outcome,
-    PatternDatabase, PruningConfig, Ratio, SearchLimits, SearchResult, StubbornSetsConfig,
+    CanonicalPdbs, HMax, Heuristic, HeuristicConfig, IpdbConfig, LimitedPruningConfig, LmCut,
+    Outcome, PatternDatabase, PruningConfig, Ratio, Scp, SearchLimits, SearchResult,
+    StubbornSetsConfig,
 };
 use task::{Fact, OpId, Operator, Task, VarId, Variable};
 
@@ -545,6 +546,53 @@ proptest! {
         for s in ["astar(cpdbs(systematic(2)))", "astar(cpdbs())", "astar(ipdb(num_samples=20))"] {
             let mut h = parse_search(s).unwrap().heuristic.build_with_limits(&task, &SearchLimits::default()).unwrap().into_heuristic().unwrap();
             check_admissible(&task, &space, &h_star, &mut h)?;
+        }
+    }
+
+    #[test]
+    fn scp_is_admissible_dominates_its_pdbs_is_deterministic_and_keeps_astar_optimal(
+        task in tasks(), seed in 0u32..3,
+    ) {
+        let space = Space::new(&task);
+        let h_star = space.h_star(&task);
+        let forward = space.forward(&task);
+        let optimal = (0..space.states.len())
+            .filter(|&s| task.is_goal(&space.states[s]))
+            .filter_map(|s| forward[s])
+            .min();
+        for s in [
+            format!("astar(scp([projections(sys_scp())], orders=greedy_orders(random_seed={seed}), random_seed={seed}, samples=30))"),
+            format!("astar(scp([projections(systematic(3))], diversify=false, max_orders=4, samples=10, random_seed={seed}))"),
+            "astar(scp([projections(systematic(2)), projections(hillclimbing(pdb_max_size=48, collection_max_size=200, num_samples=30, min_improvement=1)), projections([[0, 1]])], samples=20))".to_string(),
+            format!("astar(scp_online([projections(systematic(2))], interval={}))", seed + 1),
+        ] {
+            let HeuristicConfig::Scp(config) = parse_search(&s).unwrap().heuristic else {
+                panic!("{s}");
+            };
+            let mut h = Scp::new(&task, &config, &SearchLimits::default()).unwrap();
+            // At least the best of its projections' pattern databases.
+            let pdbs: Vec<PatternDatabase> = h
+                .patterns()
+                .map(|p| PatternDatabase::new(&task, &p.iter().map(|v| v.0).collect::<Vec<_>>()).unwrap())
+                .collect();
+            let mut again = Scp::new(&task, &config, &SearchLimits::default()).unwrap();
+            for state in &space.states {
+                let value = h.evaluate(state);
+                // The same seed gives the same values (online: the same orders, since
+                // both see the same states in the same order).
+                prop_assert_eq!(again.evaluate(state), value, "{}", s);
+                let dead = pdbs.iter().any(|p| p.value(state).is_none());
+                prop_assert_eq!(value.is_none(), dead, "{}", s);
+                let best = pdbs.iter().filter_map(|p| p.value(state)).max().unwrap_or(0);
+                if let Some(v) = value {
+                    prop_assert!(v >= best, "{}: {} < {} in {:?}", s, v, best, state);
+                }
+            }
+            check_admissible(&task, &space, &h_star, &mut h)?;
+            let mut fresh = Scp::new(&task, &config, &SearchLimits::default()).unwrap();
+            let result = run(&task, &mut fresh);
+            prop_assert_eq!(cost(&result), optimal, "{}", s);
+            check_plan(&task, &result);
         }
     }
 

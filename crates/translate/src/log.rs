@@ -35,6 +35,13 @@ impl Translation {
                     format!("Translator mutex groups: {}", sizes.mutex_groups),
                     format!("Translator total mutex groups size: {mutex_size}"),
                 ]);
+                let options = s.options();
+                if options != crate::TranslateOptions::default() {
+                    lines.extend(options.log_lines());
+                }
+                if let Some(h2) = &s.h2 {
+                    lines.extend(h2.log_lines());
+                }
                 if let Some(n) = s.dominated_operators_removed {
                     lines.push(format!("Removed {n} dominated operator(s)"));
                 }

@@ -302,36 +302,6 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
     Ok(None)
 }
 
-/// Uniform-cost search on the finite-domain task.
-fn search_sas(task: &task::Task) -> Option<u64> {
-    let mut best: HashMap<Vec<u32>, u64> = HashMap::new();
-    let mut queue = BinaryHeap::new();
-    best.insert(task.initial_state.clone(), 0);
-    queue.push(Reverse((0u64, task.initial_state.clone())));
-    while let Some(Reverse((g, s))) = queue.pop() {
-        if best.get(&s).is_some_and(|&b| b < g) {
-            continue;
-        }
-        if task.is_goal(&s) {
-            return Some(g);
-        }
-        for op in &task.operators {
-            if task.is_applicable(op, &s) {
-                let mut t = s.clone();
-                for e in &op.effects {
-                    t[e.var.index()] = e.value;
-                }
-                let ng = g + task.cost(op);
-                if best.get(&t).is_none_or(|&b| ng < b) {
-                    best.insert(t.clone(), ng);
-                    queue.push(Reverse((ng, t)));
-                }
-            }
-        }
-    }
-    None
-}
-
 proptest! {
     // Failures are saved to, and replayed first from, `tests/preserves_cost.proptest-regressions`
     // (proptest's default persistence; committed, so every run replays them).
@@ -348,7 +318,7 @@ proptest! {
         };
         let found = match translate::translate(&domain, &problem).map_err(|e| TestCaseError::fail(e.to_string()))? {
             translate::Translation::Unsolvable { .. } => None,
-            translate::Translation::Task(t) => search_sas(&t.task),
+            translate::Translation::Task(t) => task::testing::optimal_cost(&t.task),
             translate::Translation::Stopped { limit, .. } => {
                 return Err(TestCaseError::fail(format!("{limit} without limits")))
             }

@@ -8,8 +8,8 @@
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
 
-use proptest::prelude::*;
 use crate::{Fact, Operator, Task, VarId, Variable};
+use proptest::prelude::*;
 
 /// An operator from `(variable, value)` pairs: its preconditions and its effects.
 pub fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
@@ -124,7 +124,11 @@ pub fn tasks() -> impl Strategy<Value = Task> {
                             task.goal = goal;
                         }
                     }
-                    assert_eq!(task.validate(), Ok(()), "the generator made an invalid task");
+                    assert_eq!(
+                        task.validate(),
+                        Ok(()),
+                        "the generator made an invalid task"
+                    );
                     task
                 },
             )
@@ -168,7 +172,6 @@ fn random_walk_goal(task: &Task, mut seed: u64, steps: usize) -> Option<Vec<Fact
         .collect();
     Some(goal)
 }
-
 
 /// The optimal cost of `task` (`None`: unsolvable) by uniform-cost search over its
 /// explicit state space, with [`Task::cost`]. Exponential in the number of variables:

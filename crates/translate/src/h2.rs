@@ -51,7 +51,10 @@ impl H2Stats {
     /// Fast Downward-style log lines, one per category, each without a newline.
     pub fn log_lines(&self) -> [String; 4] {
         [
-            format!("h2: removed {} unreachable operator(s)", self.operators_removed),
+            format!(
+                "h2: removed {} unreachable operator(s)",
+                self.operators_removed
+            ),
             format!("h2: removed {} unreachable fact(s)", self.facts_removed),
             format!(
                 "h2: removed {} variable(s) with one reachable value",
@@ -346,7 +349,10 @@ fn prune(task: &mut Task, facts: &Facts, h2: &Reachability) -> H2Stats {
     }
     let map = |f: Fact| -> Option<Fact> {
         let var = new_var[f.var.index()]?;
-        Some(Fact::new(VarId(var), new_value[f.var.index()][f.value as usize]?))
+        Some(Fact::new(
+            VarId(var),
+            new_value[f.var.index()][f.value as usize]?,
+        ))
     };
     let map_all = |fs: &[Fact]| -> Vec<Fact> { fs.iter().filter_map(|&f| map(f)).collect() };
     // Mutex pairs no group of the task holds, on kept variables, before renumbering.
@@ -520,7 +526,13 @@ mod tests {
         );
         assert_eq!(t.variables.len(), 2);
         assert_eq!(t.variables[0].value_names, ["v0-0", "v0-1"]);
-        assert_eq!((t.variables[1].name.as_str(), t.variables[1].value_names[1].as_str()), ("var1", "v2-1"));
+        assert_eq!(
+            (
+                t.variables[1].name.as_str(),
+                t.variables[1].value_names[1].as_str()
+            ),
+            ("var1", "v2-1")
+        );
         assert_eq!(t.initial_state, [0, 0]);
         assert_eq!(t.goal, [Fact::new(VarId(1), 1)]);
         assert_eq!(t.operators[1].preconditions, [Fact::new(VarId(0), 1)]);
@@ -564,7 +576,11 @@ mod tests {
         assert_eq!(stats.operators_removed, 1);
         // var2=1 went with `both`, and var2 with it.
         assert_eq!((stats.facts_removed, stats.variables_removed), (1, 1));
-        assert_eq!(t.mutexes.len(), 1, "the group stays, and is not added again");
+        assert_eq!(
+            t.mutexes.len(),
+            1,
+            "the group stays, and is not added again"
+        );
     }
 
     #[test]

@@ -4,7 +4,8 @@
 //! equality, zero and non-zero costs) are solved twice by uniform-cost search: once on the
 //! PDDL semantics directly (every binding of every action over all objects, states as sets
 //! of ground atoms: the slow, obviously correct oracle) and once on the translated
-//! finite-domain task. Both must agree on solvability and on the optimal cost.
+//! finite-domain task. Both must agree on solvability and on the optimal cost, with the
+//! translator's options (h², dominated operators) off and on.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
@@ -316,13 +317,19 @@ proptest! {
         let Ok(expected) = oracle(&domain, &problem) else {
             return Err(TestCaseError::reject("too many states for the oracle"));
         };
-        let found = match translate::translate(&domain, &problem).map_err(|e| TestCaseError::fail(e.to_string()))? {
-            translate::Translation::Unsolvable { .. } => None,
-            translate::Translation::Task(t) => task::testing::optimal_cost(&t.task),
-            translate::Translation::Stopped { limit, .. } => {
-                return Err(TestCaseError::fail(format!("{limit} without limits")))
-            }
-        };
-        prop_assert_eq!(found, expected, "{}\n{}", d, p);
+        // Fast Downward's translation, with h², and with h² and dominated operators.
+        let h2 = translate::TranslateOptions { h2_mutexes: true, ..Default::default() };
+        let both = translate::TranslateOptions { remove_dominated_operators: true, ..h2 };
+        for options in [translate::TranslateOptions::default(), h2, both] {
+            let translation = translate::translate_with_options(&domain, &problem, &task::Limits::default(), &options);
+            let found = match translation.map_err(|e| TestCaseError::fail(e.to_string()))? {
+                translate::Translation::Unsolvable { .. } => None,
+                translate::Translation::Task(t) => task::testing::optimal_cost(&t.task),
+                translate::Translation::Stopped { limit, .. } => {
+                    return Err(TestCaseError::fail(format!("{limit} without limits")))
+                }
+            };
+            prop_assert_eq!(found, expected, "{:?}\n{}\n{}", options, d, p);
+        }
     }
 }

@@ -197,6 +197,8 @@ pub struct PlanArgs {
     /// (PDDL input only).
     #[arg(long)]
     pub validate: bool,
+    #[command(flatten)]
+    pub translator: translate::TranslateOptions,
 }
 
 /// The options of `translate`.
@@ -208,6 +210,8 @@ pub struct TranslateArgs {
     /// Where to write the task.
     #[arg(long, value_name = "FILE", default_value = "output.sas")]
     pub sas_file: PathBuf,
+    #[command(flatten)]
+    pub translator: translate::TranslateOptions,
 }
 
 /// The options of `validate`.

@@ -106,17 +106,16 @@ impl TranslateStats {
 /// What the translator does beyond Fast Downward's translation; the default is exactly
 /// Fast Downward's (its variables, values and operators, in its order). With the `clap`
 /// feature these are the command line's options of `translate` and `plan`, declared
-/// once here (the doc comments of the fields are their `--help` texts).
+/// once here (the doc comments of the fields are their `--help` texts). Each option
+/// keeps the optimal cost and solvability; both on run h² first.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 #[cfg_attr(feature = "clap", derive(clap::Args))]
 pub struct TranslateOptions {
-    /// After translation, run h² (forward) and remove the operators and facts it proves
-    /// unreachable, adding the mutexes it finds (Fast Downward's h² preprocessor); off by
-    /// default. Keeps the optimal cost.
+    /// Remove what h² proves unreachable (operators, facts) and add the mutexes it finds
     #[cfg_attr(feature = "clap", arg(long, help_heading = "Translator options"))]
     pub h2_mutexes: bool,
-    /// Remove every operator that another with the same effects, a subset of its
-    /// preconditions and no higher cost dominates; off by default. Keeps the optimal cost.
+    /// Remove each operator another dominates: same effects, a subset of its preconditions, no
+    /// higher cost
     #[cfg_attr(feature = "clap", arg(long, help_heading = "Translator options"))]
     pub remove_dominated_operators: bool,
 }

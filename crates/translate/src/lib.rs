@@ -91,16 +91,8 @@ pub struct TranslateStats {
     /// What h² removed and found ([`TranslateOptions::h2_mutexes`]); `None` when that
     /// was not asked for.
     pub h2: Option<H2Stats>,
-}
-
-impl TranslateStats {
-    /// The options the translation ran with, as its statistics show them.
-    pub fn options(&self) -> TranslateOptions {
-        TranslateOptions {
-            h2_mutexes: self.h2.is_some(),
-            remove_dominated_operators: self.dominated_operators_removed.is_some(),
-        }
-    }
+    /// The options the translation ran with.
+    pub options: TranslateOptions,
 }
 
 /// What the translator does beyond Fast Downward's translation; the default is exactly
@@ -223,8 +215,22 @@ pub fn translate_within(
 }
 
 /// Like [`translate_within`], with `options` beyond Fast Downward's translation, applied
-/// to the finished task under the same limits.
+/// to the finished task under the same limits (h² first, then dominated operators).
 pub fn translate_with_options(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    limits: &task::Limits,
+    options: &TranslateOptions,
+) -> Result<Translation, TranslateError> {
+    let mut translation = translate_stages(domain, problem, limits, options)?;
+    let (Translation::Task(TranslatedTask { stats, .. })
+    | Translation::Unsolvable { stats, .. }
+    | Translation::Stopped { stats, .. }) = &mut translation;
+    stats.options = *options;
+    Ok(translation)
+}
+
+fn translate_stages(
     domain: &pddl::Domain,
     problem: &pddl::Problem,
     limits: &task::Limits,

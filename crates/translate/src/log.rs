@@ -25,7 +25,7 @@ impl Translation {
             Translation::Task(t) => &t.stats,
             Translation::Unsolvable { stats, .. } | Translation::Stopped { stats, .. } => stats,
         };
-        let options = stats.options();
+        let options = stats.options;
         let mut on = Vec::new();
         if options.h2_mutexes {
             on.push("--h2-mutexes");
@@ -77,7 +77,7 @@ impl Translation {
                     format!("Translator mutex groups: {}", sizes.mutex_groups),
                     format!("Translator total mutex groups size: {mutex_size}"),
                 ]);
-                let options = s.options();
+                let options = s.options;
                 if options != crate::TranslateOptions::default() {
                     lines.extend(options.log_lines());
                 }

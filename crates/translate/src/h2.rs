@@ -371,13 +371,13 @@ fn prune(task: &mut Task, facts: &Facts, h2: &Reachability) -> H2Stats {
         }
         g
     };
-    for p in 0..facts.count {
+    for (p, groups) in groups_of.iter().enumerate() {
         let fp = fact_of(p);
         if !h2.reachable(p) || new_var[fp.var.index()].is_none() {
             continue;
         }
         in_group.iter_mut().for_each(|w| *w = 0);
-        for &g in &groups_of[p] {
+        for &g in groups {
             for &f in &task.mutexes[g] {
                 set(&mut in_group, facts.id(f));
             }

@@ -60,6 +60,50 @@ fn read_bounded(decoder: impl std::io::Read, size: u64, out: &mut Vec<u8>) -> st
     Ok(())
 }
 
+/// A chunk's compression, under the names of the two chunked formats: MCAP's `""`,
+/// `zstd`, `lz4` and ROS 1's `none`, `bz2`, `lz4`.
+#[derive(Debug, Clone, Copy)]
+enum Codec {
+    Stored,
+    Zstd,
+    Bz2,
+    Lz4,
+}
+
+impl Codec {
+    /// The codec a format names `name` in its `table`; an unknown name is
+    /// [`BagError::UnknownCompression`] at `offset`, listing `supported`.
+    fn named(
+        table: &[(&str, Codec)],
+        name: &str,
+        (path, offset): (&Path, u64),
+        supported: &'static str,
+    ) -> Result<Codec, BagError> {
+        let found = table.iter().find(|(n, _)| *n == name).map(|&(_, c)| c);
+        found.ok_or_else(|| BagError::UnknownCompression {
+            path: path.to_path_buf(),
+            offset,
+            compression: name.to_string(),
+            supported,
+        })
+    }
+
+    /// Decompresses a chunk's `data`, `size` bytes uncompressed, into `out` (stored data
+    /// becomes `out` itself), refusing more than `size` bytes ([`read_bounded`]).
+    fn decompress(self, data: Vec<u8>, size: u64, out: &mut Vec<u8>) -> std::io::Result<()> {
+        match self {
+            Codec::Stored => {
+                *out = data;
+                Ok(())
+            }
+            Codec::Zstd => zstd::stream::read::Decoder::new(&data[..])
+                .and_then(|decoder| read_bounded(decoder, size, out)),
+            Codec::Bz2 => read_bounded(bzip2::read::BzDecoder::new(&data[..]), size, out),
+            Codec::Lz4 => read_bounded(lz4_flex::frame::FrameDecoder::new(&data[..]), size, out),
+        }
+    }
+}
+
 /// Largest message decoded, in bytes of its serialization: 16 MiB. The topics an import
 /// reads (`/tf`, poses, object lists) carry a few kilobytes per message, and a decoded
 /// [`Value`] tree takes several times its bytes, so a larger message of a wanted topic is

@@ -18,7 +18,7 @@ use mcap::records::Record;
 use mcap::sans_io::{LinearReadEvent, LinearReader, LinearReaderOptions};
 
 use crate::decode::Encoding;
-use crate::{BagError, Connection, RawMessage, Topic};
+use crate::{BagError, Codec, Connection, RawMessage, Topic};
 
 pub const MAGIC: &[u8] = b"\x89MCAP0\r\n";
 
@@ -207,27 +207,14 @@ impl McapReader {
         let compression = header.compression.as_str();
         let mut out = std::mem::take(&mut self.chunk);
         out.clear();
-        let decoded = match compression {
-            "" => {
-                out = data;
-                Ok(())
-            }
-            "zstd" => zstd::stream::read::Decoder::new(&data[..])
-                .and_then(|decoder| crate::read_bounded(decoder, size, &mut out)),
-            "lz4" => crate::read_bounded(
-                lz4_flex::frame::FrameDecoder::new(&data[..]),
-                size,
-                &mut out,
-            ),
-            _ => {
-                return Err(BagError::UnknownCompression {
-                    path: self.path.clone(),
-                    offset: self.consumed,
-                    compression: compression.to_string(),
-                    supported: "none, zstd, lz4",
-                })
-            }
-        };
+        const CODECS: [(&str, Codec); 3] = [
+            ("", Codec::Stored),
+            ("zstd", Codec::Zstd),
+            ("lz4", Codec::Lz4),
+        ];
+        let at = (self.path.as_path(), self.consumed);
+        let codec = Codec::named(&CODECS, compression, at, "none, zstd, lz4")?;
+        let decoded = codec.decompress(data, size, &mut out);
         let shown = if compression.is_empty() {
             "uncompressed"
         } else {

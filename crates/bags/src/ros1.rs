@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::decode::Encoding;
-use crate::{BagError, Connection, RawMessage, Topic};
+use crate::{BagError, Codec, Connection, RawMessage, Topic};
 
 const MAGIC: &[u8] = b"#ROSBAG V2.0\n";
 const OP_MESSAGE: u8 = 0x02;
@@ -392,26 +392,14 @@ impl Ros1Reader {
         }
         let mut out = std::mem::take(&mut self.chunk);
         out.clear();
-        let decoded = match compression.as_str() {
-            "none" => {
-                out = data;
-                Ok(())
-            }
-            "bz2" => crate::read_bounded(bzip2::read::BzDecoder::new(&data[..]), size, &mut out),
-            "lz4" => crate::read_bounded(
-                lz4_flex::frame::FrameDecoder::new(&data[..]),
-                size,
-                &mut out,
-            ),
-            _ => {
-                return Err(BagError::UnknownCompression {
-                    path: self.path.clone(),
-                    offset,
-                    compression,
-                    supported: "none, bz2, lz4",
-                })
-            }
-        };
+        const CODECS: [(&str, Codec); 3] = [
+            ("none", Codec::Stored),
+            ("bz2", Codec::Bz2),
+            ("lz4", Codec::Lz4),
+        ];
+        let at = (self.path.as_path(), offset);
+        let codec = Codec::named(&CODECS, &compression, at, "none, bz2, lz4")?;
+        let decoded = codec.decompress(data, size, &mut out);
         decoded.map_err(|e| {
             self.corrupt(
                 offset,

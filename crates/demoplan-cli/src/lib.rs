@@ -43,15 +43,6 @@ pub use recording_input::open as open_recording;
 #[global_allocator]
 static ALLOCATOR: task::memory::CountingAllocator = task::memory::CountingAllocator;
 
-/// A command line as given (`argv`, after the program's name) and `program`, the command
-/// that runs demoplan again (`[python, -m, demoplan]` in Python): a grid runs each cell as
-/// `program... argv... --cell ID` (docs/grids.md).
-#[derive(Debug, Clone)]
-pub struct Invocation {
-    pub program: Vec<OsString>,
-    pub argv: Vec<OsString>,
-}
-
 /// Runs the command line `argv` (its first item is the program's name) and returns the
 /// exit code the executable would exit with, after printing what it prints. A grid's
 /// cells run this executable again.
@@ -64,12 +55,17 @@ where
     run_as(vec![program], argv.into_iter().map(Into::into).collect())
 }
 
-/// [`run`], with `program` (not empty) as the command that runs demoplan again.
+/// [`run`], with `program` as the command that runs demoplan again (a grid runs each
+/// cell as `program... argv... --cell ID`, docs/grids.md). An empty `program` is a usage
+/// error (exit 36), not a panic.
 pub fn run_as(program: Vec<OsString>, argv: Vec<OsString>) -> ExitCode {
     stop_cleanly_when_stdout_fails();
-    let this = Invocation {
-        program,
-        argv: argv.iter().skip(1).cloned().collect(),
+    let this = match experiment::grid::Relaunch::new(&program, argv.get(1..).unwrap_or(&[])) {
+        Ok(this) => this,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::USAGE;
+        }
     };
     match cli::Cli::try_parse_from(argv) {
         Ok(cli) => commands::run(cli.command, &this).unwrap_or_else(|failure| {

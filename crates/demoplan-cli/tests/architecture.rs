@@ -55,7 +55,7 @@ fn lower_crates_never_depend_on_higher_ones() {
         ("search", &["task"]),
         ("validate", &["pddl"]),
         ("simulate", &["atomic-write", "geometry", "recording"]),
-        ("import", &["bags", "recording"]),
+        ("import", &["atomic-write", "bags", "recording"]),
         ("grounding", &["recording"]),
         ("segment", &["recording", "grounding"]),
     ] {
@@ -109,9 +109,9 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
 /// computing something that belongs in a library crate. The budget is 2,950 today: 2,795
-/// after issue 21's last cut, plus issue 24's grids (`GridArgs`, declared once, the
-/// `Invocation` a grid's cells run again, the `--list-cells`/`--cell` glue) and `--slurm`
-/// (`SlurmArgs`, its help texts, the glue that hands them to `experiment::grid::slurm`);
+/// after issue 21's last cut, plus issue 24's grids (`GridArgs`, declared once, and the
+/// calls of `experiment::grid`'s `Relaunch`, `cell_or_list`, `jobs` and `memory_limit`)
+/// and `--slurm` (`SlurmArgs`, its help texts, mapped to `experiment::grid::slurm`);
 /// issue 21 aimed at 2,500. What is left: the option declarations and their help texts
 /// (`cli.rs`, their wording pinned by the `--help` snapshots), diagnostics
 /// (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`: library errors rendered with
@@ -137,5 +137,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total < 2_950, "crates/demoplan-cli/src has {total} lines");
+    assert!(total < 2_870, "crates/demoplan-cli/src has {total} lines");
 }

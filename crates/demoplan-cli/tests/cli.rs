@@ -933,13 +933,7 @@ fn simulate_rejects_bad_arguments_with_exit_36() {
         &["simulate", "-o", "out", "--params", "bad.json"],
         &["simulate", "-o", "out", "--params", "wrong.json"],
     ] {
-        let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(36),
-            "{args:?}: {}",
-            transcript(&out)
-        );
+        refused_in(&tmp, args);
     }
     assert!(
         !tmp.join("out").exists(),
@@ -1376,13 +1370,7 @@ fn demonstration_commands_reject_bad_command_lines_with_exit_36() {
         &["timeline", "x.jsonl", "-o", "t.png"],
         &["segment", "--config", "missing.toml", "x.jsonl"],
     ] {
-        let out = demoplan().current_dir(&tmp).args(args).output().unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(36),
-            "{args:?}: {}",
-            transcript(&out)
-        );
+        refused_in(&tmp, args);
     }
 }
 
@@ -1943,8 +1931,36 @@ fn study_writes_every_file_and_resumes() {
     assert_eq!(read("results.jsonl").lines().count(), 48);
 }
 
+/// A study of one hand, `--seeds SEEDS --heights HEIGHTS` and `extra`, written to
+/// `DIR/out`: that folder and the study's options.
+fn one_hand_study(
+    dir: &Path,
+    seeds: &str,
+    heights: &str,
+    extra: &[&str],
+) -> (PathBuf, Vec<String>) {
+    let out = dir.join("out");
+    let mut args: Vec<String> = [
+        "-o",
+        out.to_str().unwrap(),
+        "--seeds",
+        seeds,
+        "--hands",
+        "1",
+    ]
+    .map(String::from)
+    .to_vec();
+    args.extend(
+        ["--heights", heights]
+            .iter()
+            .chain(extra)
+            .map(|a| a.to_string()),
+    );
+    (out, args)
+}
+
 /// The cells' ids that `--list-cells` prints for the study `args` (its header left out).
-fn listed_cells(args: &[&str]) -> Vec<String> {
+fn listed_cells(args: &[String]) -> Vec<String> {
     let list = succeeds(demoplan().arg("study").args(args).arg("--list-cells"));
     let text = stdout_text(&list);
     let mut lines = text.lines();
@@ -1983,19 +1999,7 @@ fn assert_every_cell_whole(out: &Path, ids: &[String]) {
 
 #[test]
 fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
-    let tmp = tempdir("grid-list");
-    let out = tmp.join("out");
-    let out_arg = out.to_str().unwrap();
-    let args = [
-        "-o",
-        out_arg,
-        "--seeds",
-        "3",
-        "--hands",
-        "1",
-        "--heights",
-        "2",
-    ];
+    let (out, args) = one_hand_study(&tempdir("grid-list"), "3", "2", &[]);
     let ids = listed_cells(&args);
     // 1 seed x 1 hand x 1 height x 2 planners x 3 levels, each once.
     assert_eq!(ids.len(), 6);
@@ -2008,20 +2012,31 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
         let done = succeeds(
             demoplan()
                 .arg("study")
-                .args(args)
+                .args(&args)
                 .args(["-j", "2"])
                 .args(extra),
         );
-        let stdout = stdout_text(&done);
-        assert!(stdout.contains("2 at a time"), "{stdout}");
-        stdout
+        stdout_text(&done)
     };
-    assert!(computed(&[]).contains("6 runs (6 computed now"));
-    assert!(computed(&[]).contains("6 runs (0 computed now"));
-    assert!(computed(&["--force"]).contains("6 runs (6 computed now"));
+    let ran = "6 runs (6 computed now, 0 from earlier results, 2 at a time)";
+    let first = computed(&[]);
+    assert!(first.contains(ran), "{first}");
+    // Nothing ran, so nothing ran "at a time".
+    let again = computed(&[]);
+    assert!(
+        again.contains("6 runs (0 computed now, 6 from earlier results) in"),
+        "{again}"
+    );
+    let forced = computed(&["--force"]);
+    assert!(forced.contains(ran), "{forced}");
     assert_every_cell_whole(&out, &ids);
     // `--cell ID` computes that one cell and prints its record.
-    let one = succeeds(demoplan().arg("study").args(args).args(["--cell", &ids[2]]));
+    let one = succeeds(
+        demoplan()
+            .arg("study")
+            .args(&args)
+            .args(["--cell", &ids[2]]),
+    );
     let record: serde_json::Value = serde_json::from_str(stdout_text(&one).trim()).unwrap();
     assert_eq!(record["id"], ids[2].as_str());
     exits_saying(
@@ -2029,7 +2044,7 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
         "no cell of this grid has that id",
         demoplan()
             .arg("study")
-            .args(args)
+            .args(&args)
             .args(["--cell", "0123456789abcdef"]),
     );
 }
@@ -2041,26 +2056,13 @@ fn a_grid_lists_its_cells_runs_nothing_for_it_and_forces_on_request() {
 #[test]
 fn an_interrupted_study_resumes_with_every_cell_whole() {
     use std::os::unix::process::CommandExt;
-    let tmp = tempdir("grid-interrupt");
-    let out = tmp.join("out");
-    let out_arg = out.to_str().unwrap();
-    let args = [
-        "-o",
-        out_arg,
-        "--seeds",
-        "1-2",
-        "--hands",
-        "1",
-        "--heights",
-        "2-3",
-        "--time-limit",
-        "20",
-    ];
+    let extra = ["--time-limit", "20"];
+    let (out, args) = one_hand_study(&tempdir("grid-interrupt"), "1-2", "2-3", &extra);
     let ids = listed_cells(&args);
     assert_eq!(ids.len(), 24);
     let mut grid = demoplan()
         .arg("study")
-        .args(args)
+        .args(&args)
         .args(["-j", "2"])
         .process_group(0)
         .stdout(std::process::Stdio::null())
@@ -2112,7 +2114,7 @@ fn an_interrupted_study_resumes_with_every_cell_whole() {
         "every cell was done before the interruption"
     );
 
-    let again = succeeds(demoplan().arg("study").args(args).args(["-j", "2"]));
+    let again = succeeds(demoplan().arg("study").args(&args).args(["-j", "2"]));
     let stdout = stdout_text(&again);
     assert!(
         stdout.contains(&format!("24 runs ({} computed now", 24 - whole)),
@@ -2208,18 +2210,7 @@ fn study_refuses_bad_options_before_writing_anything() {
         (vec!["--heights", "8", "--towers", "4"], "cubes"),
         (vec!["--time-limit", "soon"], "--time-limit"),
     ] {
-        let out = demoplan()
-            .current_dir(&tmp)
-            .args(["study", "-o", "out"])
-            .args(&args)
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(36),
-            "{args:?}: {}",
-            transcript(&out)
-        );
+        let out = refused_in(&tmp, &[&["study", "-o", "out"][..], &args].concat());
         let err = stderr_text(&out);
         assert!(err.contains(what), "{args:?}: {err}");
         assert!(!tmp.join("out").exists(), "{args:?} wrote output");
@@ -2272,18 +2263,7 @@ fn slurm_writes_the_grid_as_jobs_and_runs_nothing() {
         ),
         (vec!["--slurm-partition", "short"], "--slurm"),
     ] {
-        let out = demoplan()
-            .current_dir(&tmp)
-            .args(["study", "-o", "out"])
-            .args(&args)
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(36),
-            "{args:?}: {}",
-            transcript(&out)
-        );
+        let out = refused_in(&tmp, &[&["study", "-o", "out"][..], &args].concat());
         assert!(
             stderr_text(&out).contains(what),
             "{args:?}: {}",
@@ -2371,6 +2351,40 @@ fn fast_downward_backends_say_clearly_when_it_is_missing() {
     assert!(!tmp.join("out").exists());
 }
 
+/// Runs `cmd` in `dir`: a command line error (36), whose transcript names `args`.
+#[track_caller]
+fn refused_in(dir: &Path, args: &[&str]) -> Output {
+    let out = demoplan().current_dir(dir).args(args).output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(36),
+        "{args:?}: {}",
+        transcript(&out)
+    );
+    out
+}
+
+/// Runs `cmd` with a reader that goes away before reading anything (`| head -0`): it
+/// exits with a shell's SIGPIPE code, 141, and says nothing.
+#[track_caller]
+fn stops_quietly_when_the_reader_goes_away(cmd: &mut std::process::Command) {
+    let mut child = cmd
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(141),
+        "{:?}: {}",
+        cmd,
+        transcript(&out)
+    );
+    assert!(out.stderr.is_empty(), "{:?}: {}", cmd, transcript(&out));
+}
+
 #[test]
 fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
     // `demoplan fmt --stdout FILE...` prints the formatted PDDL: over 20 KB for this problem,
@@ -2378,18 +2392,11 @@ fn a_closed_or_full_standard_output_stops_demoplan_without_a_panic() {
     // and meets the closed pipe whenever the reader goes away.
     let tmp = tempdir("closed-stdout");
     let problem = gripper(&tmp, 400).problem_file;
-    let mut child = demoplan()
-        .args(["fmt", "--stdout"])
-        .args(std::iter::repeat_n(&problem, 20))
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    // The reader goes away before reading anything (`| head -0`).
-    drop(child.stdout.take());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(141), "{}", transcript(&out));
-    assert!(out.stderr.is_empty(), "{}", transcript(&out));
+    stops_quietly_when_the_reader_goes_away(
+        demoplan()
+            .args(["fmt", "--stdout"])
+            .args(std::iter::repeat_n(&problem, 20)),
+    );
 
     let full = std::path::Path::new("/dev/full");
     if full.exists() {
@@ -2449,22 +2456,7 @@ fn segment_and_classify_stop_quietly_when_their_reader_goes_away() {
             args[0],
             full.stdout.len()
         );
-        let mut child = demoplan()
-            .current_dir(&tmp)
-            .args(&args)
-            .stdout(std::process::Stdio::piped())
-            .stderr(std::process::Stdio::piped())
-            .spawn()
-            .unwrap();
-        drop(child.stdout.take());
-        let out = child.wait_with_output().unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(141),
-            "{args:?}: {}",
-            transcript(&out)
-        );
-        assert!(out.stderr.is_empty(), "{args:?}: {}", transcript(&out));
+        stops_quietly_when_the_reader_goes_away(demoplan().current_dir(&tmp).args(&args));
     }
 }
 

@@ -71,6 +71,13 @@ fn every_command_has_its_help_pinned() {
 }
 
 #[test]
+fn run_as_with_an_empty_program_is_a_usage_error_not_a_panic() {
+    use demoplan_cli::{run_as, ExitCode};
+    let argv = ["demoplan", "study", "--list-cells"].map(std::ffi::OsString::from);
+    assert_eq!(run_as(Vec::new(), argv.to_vec()), ExitCode::USAGE);
+}
+
+#[test]
 fn the_library_entry_point_gives_the_executables_exit_codes() {
     use demoplan_cli::{run, ExitCode};
     let fixtures = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/malformed");

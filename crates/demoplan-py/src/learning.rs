@@ -137,9 +137,9 @@ impl PyLibrary {
 
     /// The PDDL domain of the operators of priority `prio` (`demoplan domain --prio`).
     fn domain(&self, py: Python<'_>, prio: usize, keep_without_effects: bool) -> PyResult<String> {
-        let operators =
-            learn::operator_subset(&self.inner, prio, domain_options(keep_without_effects));
-        if operators.is_empty() {
+        let choice = learn::DomainChoice::Priority(prio);
+        let options = domain_options(keep_without_effects);
+        let Some((operators, what)) = learn::chosen_domain(&self.inner, choice, options) else {
             return Err(failure_from(
                 py,
                 Failure::plain(
@@ -147,12 +147,8 @@ impl PyLibrary {
                     "the library has no operator that changes anything; a domain would be empty",
                 ),
             ));
-        }
-        Ok(learn::domain_text(
-            &self.inner,
-            &operators,
-            &format!("priority {prio}"),
-        ))
+        };
+        Ok(learn::domain_text(&self.inner, &operators, &what))
     }
 }
 

@@ -81,15 +81,20 @@ impl Reproduction {
 
 impl StudyOutcome {
     /// The last line: runs computed now and found in earlier results, how many at a
-    /// time, in `elapsed`, failed execution checks, and where the results are.
+    /// time (when any ran: not after `--collect` or with every result reused), in
+    /// `elapsed`, failed execution checks, and where the results are.
     pub fn closing_line(&self, out: &Path, elapsed: Duration) -> String {
+        let at_once = if self.computed > 0 {
+            format!(", {} at a time", self.jobs)
+        } else {
+            String::new()
+        };
         format!(
-            "Study: {} runs ({} computed now, {} from earlier results, {} at a time) in \
-             {:.0} s; {} plan(s) failed the execution check. Wrote {}: open {}\n",
+            "Study: {} runs ({} computed now, {} from earlier results{at_once}) in {:.0} s; \
+             {} plan(s) failed the execution check. Wrote {}: open {}\n",
             self.records.len(),
             self.computed,
             self.records.len().saturating_sub(self.computed),
-            self.jobs,
             elapsed.as_secs_f64(),
             self.failed_executions,
             out.display(),
@@ -129,8 +134,16 @@ mod tests {
         let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
         assert_eq!(
             line,
-            "Study: 0 runs (0 computed now, 0 from earlier results, 3 at a time) in 7 s; 2 \
+            "Study: 0 runs (0 computed now, 0 from earlier results) in 7 s; 2 \
              plan(s) failed the execution check. Wrote out: open out/report.html\n"
+        );
+        // Only runs computed now ran at a time (not those collected or reused).
+        done.records = vec![crate::RunRecord::blank(&crate::grid::tests::cell(1)); 4];
+        done.computed = 1;
+        let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
+        assert!(
+            line.starts_with("Study: 4 runs (1 computed now, 3 from earlier results, 3 at a time)"),
+            "{line}"
         );
         let reproduction = Reproduction {
             summary: String::new(),

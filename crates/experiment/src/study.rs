@@ -75,6 +75,16 @@ pub struct StudyOutcome {
 }
 
 impl StudyOptions {
+    /// The lab that computes the study's cells.
+    fn lab(&self) -> Lab {
+        Lab::new(
+            self.params.clone(),
+            self.fast_downward.clone(),
+            self.memory,
+            self.memory_limit,
+        )
+    }
+
     fn check(&self) -> Result<(), ExperimentError> {
         let bad = |m: String| Err(ExperimentError::Options(m));
         let empty = [
@@ -198,12 +208,7 @@ pub fn study(
     let out = &options.out;
     create_dir(out)?;
     let cells = study_grid(options);
-    let mut lab = Lab::new(
-        options.params.clone(),
-        options.fast_downward.clone(),
-        options.memory,
-        options.memory_limit,
-    );
+    let mut lab = options.lab();
     let describe = |c: &Cell| {
         format!(
             "seed {} {} height {} {}",
@@ -274,12 +279,7 @@ pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError>
 pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, ExperimentError> {
     options.check()?;
     let cells = study_grid(options);
-    let mut lab = Lab::new(
-        options.params.clone(),
-        options.fast_downward.clone(),
-        options.memory,
-        options.memory_limit,
-    );
+    let mut lab = options.lab();
     run_cell(
         &mut lab,
         &cells,

@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::AtomicU64;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
 use crate::{CountingReader, Format, ImportError, Mapping, OpenError, Source, SourceKind};
@@ -109,7 +109,51 @@ pub fn mappings_used(mappings: &BTreeMap<&'static str, Mapping>) -> String {
     text
 }
 
+/// Why a planned source's recording was not written.
+#[derive(Debug, thiserror::Error)]
+pub enum BatchError {
+    /// The source could not be opened or imported.
+    #[error(transparent)]
+    Import(ImportError),
+    /// The recording could not be written (nothing of it was).
+    #[error(transparent)]
+    Write(atomic_write::WriteError),
+}
+
 impl Planned {
+    /// Imports the source into its recording, `out`, written whole or not at all, and
+    /// returns what `demoplan import` says of it ([`Planned::imported`]). Every byte
+    /// read is counted in `bytes_read` ([`Planned::open`]); `opened` is told the count
+    /// once the source is open, before its passes.
+    pub fn import_file(
+        &self,
+        mapping: &Mapping,
+        bytes_read: Arc<AtomicU64>,
+        opened: impl FnOnce(u64),
+    ) -> Result<String, BatchError> {
+        let mut source = self
+            .open(mapping, bytes_read.clone())
+            .map_err(BatchError::Import)?;
+        opened(bytes_read.load(Ordering::Relaxed));
+        let (mut failure, mut said) = (None, String::new());
+        let written = atomic_write::write_atomically_with(&self.out, |w| {
+            match crate::import(source.as_mut(), mapping, &self.stem, w) {
+                Ok((_, header, report)) => {
+                    said = self.imported(&header, &report);
+                    Ok(())
+                }
+                Err(e) => {
+                    failure = Some(e);
+                    Err(std::io::Error::other("import failed"))
+                }
+            }
+        });
+        match failure {
+            Some(e) => Err(BatchError::Import(e)),
+            None => written.map(|()| said).map_err(BatchError::Write),
+        }
+    }
+
     /// The bytes one pass over the source reads: a bag folder's are its MCAP files' (the
     /// bag knows them), a file's its own; 0 when that cannot be known.
     pub fn size(&self) -> u64 {
@@ -172,6 +216,40 @@ mod tests {
     }
 
     const UNITY: &str = r#"{"playbackTimestepMilliseconds": 10, "log": []}"#;
+
+    #[test]
+    fn a_source_is_imported_into_its_file_whole_or_not_at_all() {
+        let dir = scratch("import-file");
+        let bag =
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../bags/tests/fixtures/p01-d01.lz4.bag");
+        let plan = plan_import(std::slice::from_ref(&bag), &dir.join("a")).unwrap();
+        let mapping = Mapping::default_for(plan[0].format());
+        let counter = Arc::new(AtomicU64::new(0));
+        let mut at_open = 0;
+        let said = plan[0]
+            .import_file(&mapping, counter.clone(), |n| at_open = n)
+            .unwrap();
+        assert!(
+            said.starts_with(&format!("{} -> ", bag.display())),
+            "{said}"
+        );
+        let written = std::fs::read_to_string(dir.join("a/p01-d01.lz4.jsonl")).unwrap();
+        let frames = recording::Reader::new(written.as_bytes()).unwrap();
+        assert!(frames.map(Result::unwrap).count() > 0);
+        let size = plan[0].size();
+        assert!(at_open > 0);
+        // Each pass reads the whole bag (and a ROS 1 bag's index again: tests/progress.rs).
+        assert!(counter.load(Ordering::Relaxed) >= at_open + crate::SOURCE_PASSES * size);
+
+        // A log whose entry is not one: an import error, and no file.
+        let bad = dir.join("b/bad.json");
+        std::fs::write(&bad, r#"{"playbackTimestepMilliseconds": 10, "log": [7]}"#).unwrap();
+        let plan = plan_import(&[bad], &dir.join("b")).unwrap();
+        let mapping = Mapping::default_for(plan[0].format());
+        let e = plan[0].import_file(&mapping, counter, |_| ()).unwrap_err();
+        assert!(matches!(e, BatchError::Import(_)), "{e}");
+        assert!(!dir.join("b/bad.jsonl").exists());
+    }
 
     #[test]
     fn the_mappings_used_are_named_by_format_only_when_there_are_several() {

@@ -65,7 +65,7 @@ pub use assemble::{
     Source, SOURCE_PASSES,
 };
 pub use axes::{Axes, QuaternionOrder, SignedAxis};
-pub use batch::{formats, mappings_used, plan_import, PlanError, Planned};
+pub use batch::{formats, mappings_used, plan_import, BatchError, PlanError, Planned};
 pub use error::{ImportError, InputError, Location, Problem};
 pub use mapping::{
     native_name, strip_prefix, BagMapping, ContactSource, EntityRule, Format, GraspSource, Mapping,

@@ -58,6 +58,34 @@ pub struct Level<'a> {
     pub operators: Vec<Ranked<'a>>,
 }
 
+/// Which domain of a library to write (`demoplan domain -o`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DomainChoice {
+    /// The paper's `OperatorSubset` of this priority (1 or more).
+    Priority(usize),
+    /// Every eligible operator: the last level's subset.
+    Full,
+}
+
+/// The operators of the domain `choice` names, most frequent first per type, and how the
+/// domain names itself (`priority 2`, `full domain`); `None` when no eligible operator
+/// changes anything, so that the domain would be empty.
+pub fn chosen_domain(
+    library: &Library,
+    choice: DomainChoice,
+    options: DomainOptions,
+) -> Option<(Vec<Ranked<'_>>, String)> {
+    let (prio, what) = match choice {
+        DomainChoice::Priority(prio) => (prio, format!("priority {prio}")),
+        DomainChoice::Full => {
+            let most = levels(library, options).last().map_or(0, |l| l.prio);
+            (most.max(1), "full domain".to_string())
+        }
+    };
+    let operators = operator_subset(library, prio, options);
+    (!operators.is_empty()).then_some((operators, what))
+}
+
 /// The distinct subsets for priority 1, 2, ... up to the full domain, equal consecutive
 /// subsets skipped.
 pub fn levels(library: &Library, options: DomainOptions) -> Vec<Level<'_>> {
@@ -595,6 +623,27 @@ mod tests {
             .map(|x| x.prio)
             .collect();
         assert_eq!(prios, [1, 2, 4]);
+    }
+
+    #[test]
+    fn a_chosen_domain_is_a_priority_or_the_last_level() {
+        let l = library(&[(Activity::Reach, &[5, 3, 3, 1]), (Activity::Take, &[4])]);
+        let chosen = |choice| {
+            let (operators, what) = chosen_domain(&l, choice, DomainOptions::default()).unwrap();
+            (per_type(&operators), what)
+        };
+        let two = (sizes(&l, 2), "priority 2".to_string());
+        assert_eq!(chosen(DomainChoice::Priority(2)), two);
+        assert_eq!(
+            chosen(DomainChoice::Full),
+            (sizes(&l, 4), "full domain".into())
+        );
+        // Only operators that change nothing: every domain would be empty.
+        let mut l = Library::default();
+        l.insert_counted(op(Activity::Idle, 0, false), 2);
+        for choice in [DomainChoice::Priority(1), DomainChoice::Full] {
+            assert!(chosen_domain(&l, choice, DomainOptions::default()).is_none());
+        }
     }
 
     #[test]

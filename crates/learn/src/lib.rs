@@ -39,9 +39,9 @@ mod update;
 
 pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
 pub use domain::{
-    action, domain, domain_name, levels, operator_subset, paper_goal_tower, pddl_predicate,
-    per_type, problem, tower_goal, DomainOptions, Level, Scene, Tower, TowerError, DEFAULT_CUBES,
-    DEFAULT_HANDS,
+    action, chosen_domain, domain, domain_name, levels, operator_subset, paper_goal_tower,
+    pddl_predicate, per_type, problem, tower_goal, DomainChoice, DomainOptions, Level, Scene,
+    Tower, TowerError, DEFAULT_CUBES, DEFAULT_HANDS,
 };
 pub use files::{
     arff_reader, hand_table, labelled_frames, nominal_dataset, read_truth, segment_arff,

@@ -726,13 +726,10 @@ fn count_improvements(
 ) -> Vec<u64> {
     let (sample_h, non_additive) = (collection.sample_h, collection.non_additive);
     let samples = sample_h.len();
+    let all: Vec<usize> = (0..keys.len()).collect();
     let mut needed = vec![0usize; non_additive.len()];
     let mut marked = vec![usize::MAX; samples];
-    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); non_additive.len()];
-    for (i, &k) in keys.iter().enumerate() {
-        by_group[k].push(i);
-    }
-    for (k, members) in by_group.iter().enumerate() {
+    for (k, members) in by_group(keys, &all, non_additive.len()).iter().enumerate() {
         for &i in members {
             for (s, (&h, current)) in candidate_h[i * samples..(i + 1) * samples]
                 .iter()
@@ -747,32 +744,44 @@ fn count_improvements(
             }
         }
     }
-    let dense: Vec<bool> = needed.iter().map(|&n| 2 * n > samples).collect();
+    let (dense, sparse): (Vec<usize>, Vec<usize>) = all
+        .into_iter()
+        .partition(|&i| 2 * needed[keys[i]] > samples);
     let mut improved = vec![0u64; keys.len()];
-    for (want_dense, count) in [
-        (true, count_by_reduced_cliques as CountFn),
-        (false, count_by_sorted_cliques as CountFn),
-    ] {
-        let chosen: Vec<usize> = (0..keys.len())
-            .filter(|&i| dense[keys[i]] == want_dense)
-            .collect();
-        if chosen.is_empty() {
-            continue;
-        }
-        let sub_keys: Vec<usize> = chosen.iter().map(|&i| keys[i]).collect();
-        let mut sub_h: Vec<u32> = Vec::with_capacity(chosen.len() * samples);
-        for &i in &chosen {
-            sub_h.extend_from_slice(&candidate_h[i * samples..(i + 1) * samples]);
-        }
-        let counts = count(collection, &sub_keys, &sub_h);
-        for (&i, c) in chosen.iter().zip(counts) {
-            improved[i] = c;
-        }
-    }
+    let counting = |chosen| Counting {
+        on: collection,
+        keys,
+        candidate_h,
+        chosen,
+    };
+    count_by_reduced_cliques(counting(&dense), &mut improved);
+    count_by_sorted_cliques(counting(&sparse), &mut improved);
     improved
 }
 
-type CountFn = fn(&CollectionOnSamples<'_>, &[usize], &[u32]) -> Vec<u64>;
+/// The candidates `chosen` grouped by their key: group `k` lists, in order, those with
+/// `keys[i] == k`.
+fn by_group(keys: &[usize], chosen: &[usize], groups: usize) -> Vec<Vec<usize>> {
+    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); groups];
+    for &i in chosen {
+        by_group[keys[i]].push(i);
+    }
+    by_group
+}
+
+/// What a way of counting counts: for each candidate `i` in `chosen`, the samples it
+/// improves, into `improved[i]` (the other fields as [`count_improvements`] takes them).
+#[derive(Debug, Clone, Copy)]
+struct Counting<'a> {
+    on: &'a CollectionOnSamples<'a>,
+    keys: &'a [usize],
+    candidate_h: &'a [u32],
+    chosen: &'a [usize],
+}
+
+/// A way of counting.
+#[cfg(test)]
+type CountFn = fn(Counting<'_>, &mut [u64]);
 
 /// The collection's side of evaluating candidates: its cliques, its patterns' values on
 /// the samples (`values[p * samples + s]`), its canonical value per sample (`None`: a
@@ -796,29 +805,14 @@ struct CollectionOnSamples<'a> {
 /// clique `C \ N` adds its patterns' value columns (contiguous, so the loop runs over
 /// samples in vector registers) and the group keeps the largest sum per sample. Fast
 /// Downward instead sums each clique per candidate and sample.
-fn count_by_reduced_cliques(
-    collection: &CollectionOnSamples<'_>,
-    keys: &[usize],
-    candidate_h: &[u32],
-) -> Vec<u64> {
-    let CollectionOnSamples {
-        cliques,
-        values,
-        sample_h,
-        patterns,
-        non_additive,
-    } = *collection;
-    let samples = sample_h.len();
-    let mut by_group: Vec<Vec<usize>> = vec![Vec::new(); non_additive.len()];
-    for (i, &k) in keys.iter().enumerate() {
-        by_group[k].push(i);
-    }
-    let mut improved = vec![0u64; keys.len()];
-    let mut excluded = vec![false; patterns];
+fn count_by_reduced_cliques(c: Counting<'_>, improved: &mut [u64]) {
+    let (on, samples) = (c.on, c.on.sample_h.len());
+    let by_group = by_group(c.keys, c.chosen, on.non_additive.len());
+    let mut excluded = vec![false; on.patterns];
     let mut reduced_seen: FxHashSet<Vec<u32>> = FxHashSet::default();
     let mut best = vec![0u64; samples];
     let mut sum = vec![0u64; samples];
-    for (group, members) in non_additive.iter().zip(&by_group) {
+    for (group, members) in on.non_additive.iter().zip(&by_group) {
         if members.is_empty() {
             continue;
         }
@@ -828,7 +822,7 @@ fn count_by_reduced_cliques(
         }
         reduced_seen.clear();
         best.fill(0);
-        for clique in cliques {
+        for clique in on.cliques {
             let reduced: Vec<u32> = clique
                 .iter()
                 .copied()
@@ -839,7 +833,7 @@ fn count_by_reduced_cliques(
             }
             sum.fill(0);
             for &m in &reduced {
-                let column = &values[m as usize * samples..(m as usize + 1) * samples];
+                let column = &on.values[m as usize * samples..(m as usize + 1) * samples];
                 for (acc, &v) in sum.iter_mut().zip(column) {
                     *acc += u64::from(v);
                 }
@@ -850,10 +844,10 @@ fn count_by_reduced_cliques(
             reduced_seen.insert(reduced);
         }
         for &i in members {
-            let row = &candidate_h[i * samples..(i + 1) * samples];
+            let row = &c.candidate_h[i * samples..(i + 1) * samples];
             improved[i] = row
                 .iter()
-                .zip(sample_h)
+                .zip(on.sample_h)
                 .zip(&best)
                 .filter(|((&h, current), &best)| {
                     h == DEAD || current.is_some_and(|current| u64::from(h) + best > current)
@@ -861,7 +855,6 @@ fn count_by_reduced_cliques(
                 .count() as u64;
         }
     }
-    improved
 }
 
 /// [`count_improvements`] for groups whose candidates need the collection's part on few
@@ -875,53 +868,41 @@ fn count_by_reduced_cliques(
 /// at a clique whose sum is no larger than the threshold or than the best found. Most
 /// queries look at a few cliques. A candidate with value 0 never improves a sample
 /// (the difference is at most `h(s)`).
-fn count_by_sorted_cliques(
-    collection: &CollectionOnSamples<'_>,
-    keys: &[usize],
-    candidate_h: &[u32],
-) -> Vec<u64> {
-    let CollectionOnSamples {
-        cliques,
-        values,
-        sample_h,
-        patterns,
-        non_additive,
-    } = *collection;
-    let samples = sample_h.len();
-    let words = patterns.div_ceil(64).max(1);
-    let mut members = vec![0u64; cliques.len() * words];
-    for (c, clique) in cliques.iter().enumerate() {
+fn count_by_sorted_cliques(of: Counting<'_>, improved: &mut [u64]) {
+    let (on, samples) = (of.on, of.on.sample_h.len());
+    let words = on.patterns.div_ceil(64).max(1);
+    let mut members = vec![0u64; on.cliques.len() * words];
+    for (c, clique) in on.cliques.iter().enumerate() {
         for &m in clique {
             members[c * words + m as usize / 64] |= 1 << (m % 64);
         }
     }
-    let mut excluded_sets = vec![0u64; non_additive.len() * words];
-    for (k, others) in non_additive.iter().enumerate() {
+    let mut excluded_sets = vec![0u64; on.non_additive.len() * words];
+    for (k, others) in on.non_additive.iter().enumerate() {
         for &p in others {
             excluded_sets[k * words + p as usize / 64] |= 1 << (p % 64);
         }
     }
-    let mut improved = vec![0u64; keys.len()];
-    let mut column = vec![0u64; patterns];
-    let mut heap_storage: Vec<(u64, std::cmp::Reverse<u32>)> = Vec::with_capacity(cliques.len());
-    let mut prefix: Vec<(u64, u32)> = Vec::with_capacity(cliques.len());
+    let mut column = vec![0u64; on.patterns];
+    let mut heap_storage: Vec<(u64, std::cmp::Reverse<u32>)> = Vec::with_capacity(on.cliques.len());
+    let mut prefix: Vec<(u64, u32)> = Vec::with_capacity(on.cliques.len());
     // Per group: cliques of the prefix scanned, best difference found.
-    let mut scan: Vec<(u32, u64)> = vec![(0, 0); non_additive.len()];
-    for (s, current) in sample_h.iter().enumerate() {
+    let mut scan: Vec<(u32, u64)> = vec![(0, 0); on.non_additive.len()];
+    for (s, current) in on.sample_h.iter().enumerate() {
         let current = *current;
         for (p, value) in column.iter_mut().enumerate() {
-            *value = u64::from(values[p * samples + s]);
+            *value = u64::from(on.values[p * samples + s]);
         }
         heap_storage.clear();
-        heap_storage.extend(cliques.iter().enumerate().map(|(c, clique)| {
+        heap_storage.extend(on.cliques.iter().enumerate().map(|(c, clique)| {
             let sum: u64 = clique.iter().map(|&m| column[m as usize]).sum();
             (sum, std::cmp::Reverse(c as u32))
         }));
         let mut heap = std::collections::BinaryHeap::from(std::mem::take(&mut heap_storage));
         prefix.clear();
         scan.fill((0, 0));
-        for (i, &k) in keys.iter().enumerate() {
-            let h = candidate_h[i * samples + s];
+        for &i in of.chosen {
+            let (k, h) = (of.keys[i], of.candidate_h[i * samples + s]);
             let better = match current {
                 _ if h == DEAD => true,
                 None => false,
@@ -963,7 +944,6 @@ fn count_by_sorted_cliques(
         }
         heap_storage = heap.into_vec();
     }
-    improved
 }
 
 /// A state under a random walk and its applicable operators in Fast Downward's order,
@@ -1565,24 +1545,27 @@ mod tests {
                     }
                 })
                 .collect();
-            // The dispatcher and both ways of counting, each on every group.
-            let counts: Vec<Vec<u64>> = [
-                count_improvements as CountFn,
-                count_by_reduced_cliques,
-                count_by_sorted_cliques,
-            ]
-            .iter()
-            .map(|count| {
-                let collection = CollectionOnSamples {
-                    cliques: &cliques,
-                    values: &values,
-                    sample_h: &sample_h,
-                    patterns,
-                    non_additive: &groups,
+            // The dispatcher and both ways of counting, each on every candidate.
+            let collection = CollectionOnSamples {
+                cliques: &cliques,
+                values: &values,
+                sample_h: &sample_h,
+                patterns,
+                non_additive: &groups,
+            };
+            let all: Vec<usize> = (0..candidates).collect();
+            let mut counts = vec![count_improvements(&collection, &keys, &candidate_h)];
+            for count in [count_by_reduced_cliques as CountFn, count_by_sorted_cliques] {
+                let mut improved = vec![0u64; candidates];
+                let counting = Counting {
+                    on: &collection,
+                    keys: &keys,
+                    candidate_h: &candidate_h,
+                    chosen: &all,
                 };
-                count(&collection, &keys, &candidate_h)
-            })
-            .collect();
+                count(counting, &mut improved);
+                counts.push(improved);
+            }
             for (i, &k) in keys.iter().enumerate() {
                 let expected: u64 = (0..samples)
                     .filter(|&s| {

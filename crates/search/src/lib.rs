@@ -89,7 +89,7 @@ pub use astar::{
 };
 pub use config::{
     alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, HeuristicName,
-    PatternCollectionConfig, SearchConfig, ALIASES, SEARCH_ENGINES,
+    PatternCollectionConfig, SearchConfig, UnknownAlias, ALIASES, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};

@@ -94,6 +94,15 @@ impl Space {
         Space::dijkstra(&self.edges, &[self.index[&task.initial_state]])
     }
 
+    /// The oracle's optimal cost: the cheapest distance to a goal state (`None`: no plan).
+    fn optimal_cost(&self, task: &Task) -> Option<u64> {
+        let forward = self.forward(task);
+        (0..self.states.len())
+            .filter(|&s| task.is_goal(&self.states[s]))
+            .filter_map(|s| forward[s])
+            .min()
+    }
+
     /// h*: the cheapest cost from each state to a goal state.
     fn h_star(&self, task: &Task) -> Vec<Option<u64>> {
         let mut reverse = vec![Vec::new(); self.edges.len()];
@@ -319,11 +328,7 @@ proptest! {
     #[test]
     fn astar_is_optimal(task in tasks()) {
         let space = Space::new(&task);
-        let forward = space.forward(&task);
-        let optimal = (0..space.states.len())
-            .filter(|&s| task.is_goal(&space.states[s]))
-            .filter_map(|s| forward[s])
-            .min();
+        let optimal = space.optimal_cost(&task);
 
         let hmax = run(&task, &mut HMax::new(&task).unwrap());
         let blind = run(&task, &mut Blind::new(&task));
@@ -360,11 +365,7 @@ proptest! {
         check_after in 0u64..4,
     ) {
         let space = Space::new(&task);
-        let forward = space.forward(&task);
-        let optimal = (0..space.states.len())
-            .filter(|&s| task.is_goal(&space.states[s]))
-            .filter_map(|s| forward[s])
-            .min();
+        let optimal = space.optimal_cost(&task);
         let stubborn = PruningConfig::AtomCentricStubbornSets(StubbornSetsConfig {
             use_sibling_shortcut,
             atom_selection_strategy: AtomSelectionStrategy::ALL[strategy],
@@ -531,11 +532,7 @@ proptest! {
         again_climb.evaluation_time = climb.evaluation_time;
         prop_assert_eq!(again_climb, climb);
 
-        let forward = space.forward(&task);
-        let optimal = (0..space.states.len())
-            .filter(|&s| task.is_goal(&space.states[s]))
-            .filter_map(|s| forward[s])
-            .min();
+        let optimal = space.optimal_cost(&task);
         let result = run(&task, &mut h);
         prop_assert_eq!(cost(&result), optimal);
         check_plan(&task, &result);

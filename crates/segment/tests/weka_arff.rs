@@ -355,18 +355,24 @@ fn mistakes_name_line_column_and_attribute() {
         );
         assert!(e.message.contains(says), "{body:?}: {e}");
     };
-    check("x\t1\ny\tfour\n", 6, 3, "n", "`four` is not a number");
-    check("x\n", 5, 1, "n", "1 values, but the header declares 2");
-    check("x 1 2\n", 5, 5, "n", "3 values");
-    check("x 'one\n", 5, 3, "n", "not closed");
-    check("x NaN\n", 5, 3, "n", "not a number");
-    check("{0 y, 2 3}\n", 5, 7, "@data", "index 2 is out of range");
-    check("{1 3, 0 y}\n", 5, 7, "a", "increasing order");
-    check("{0 y, 1}\n", 5, 7, "n", "has no value");
-    check("{0 y, one 3}\n", 5, 7, "@data", "attribute index");
-    check("{0 y\n", 5, 1, "@data", "ends with `}`");
-    check("{0 y} {2}\n", 5, 7, "@data", "instance weights");
-    check("x {1}\n", 5, 3, "n", "a sparse row starts with `{`");
+    let cases: Vec<&str> = include_str!("fixtures/arff-data-mistakes.txt")
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .collect();
+    assert_eq!(cases.len(), 12, "the fixture's cases");
+    for case in cases {
+        let [body, line, column, field, says] = case.split(" | ").collect::<Vec<_>>()[..] else {
+            panic!("not a case: {case:?}");
+        };
+        let body = body.replace("\\n", "\n").replace("\\t", "\t");
+        check(
+            &body,
+            line.parse().unwrap(),
+            column.parse().unwrap(),
+            field,
+            says,
+        );
+    }
     let check_header = |text: &str, line: usize, field: &str, says: &str| {
         let e = read_arff(text)
             .err()

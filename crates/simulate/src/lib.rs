@@ -41,7 +41,9 @@ mod script;
 mod study;
 mod truth;
 
-pub use manifest::{manifest, truth_path, write_study, WriteStudyError, Written, MANIFEST};
+pub use manifest::{
+    manifest, truth_path, write_study, written_listing, WriteStudyError, Written, MANIFEST,
+};
 pub use params::{Interval, ParamError, SimParams};
 pub use render::Frames;
 pub use rng::Rng;

@@ -197,9 +197,56 @@ pub fn write_study(
     Ok(all)
 }
 
+/// What `demoplan simulate` says of a study written to `out` ([`write_study`]): a
+/// listing line per demonstration ([`Demonstration::listing_line`]), then the totals.
+pub fn written_listing(study: &Study, written: &[Written], out: &Path) -> String {
+    let mut text: String = study
+        .demonstrations
+        .iter()
+        .zip(written)
+        .map(|(demo, w)| demo.listing_line(*w))
+        .collect();
+    let total_frames: u64 = written.iter().map(|w| w.frames).sum();
+    let total_seconds: f64 = written.iter().map(|w| w.seconds).sum();
+    text.push_str(&format!(
+        "wrote {} recordings ({total_frames} frames, {total_seconds:.1} s) with their ground truth \
+         to {} (listed in {MANIFEST})\n",
+        study.demonstrations.len(),
+        out.display()
+    ));
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_listing_has_a_line_per_demonstration_and_the_totals() {
+        let study = crate::study(&SimParams::default(), 3, 1, 2).unwrap();
+        let written = [
+            Written {
+                frames: 10,
+                seconds: 1.0,
+            },
+            Written {
+                frames: 5,
+                seconds: 0.5,
+            },
+        ];
+        let text = written_listing(&study, &written, Path::new("out"));
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 3, "{text}");
+        assert_eq!(
+            lines[1],
+            study.demonstrations[1].listing_line(written[1]).trim_end()
+        );
+        assert_eq!(
+            lines[2],
+            "wrote 2 recordings (15 frames, 1.5 s) with their ground truth to out (listed in \
+             simulation.json)"
+        );
+    }
 
     #[test]
     fn a_written_study_has_each_recording_with_its_truth_and_the_manifest() {

@@ -62,7 +62,52 @@ pub enum Backend {
     FastDownward(FastDownward, String),
 }
 
+/// Why a [`Backend`] could not be made: a search string that does not parse
+/// ([`ExitCode::SEARCH_INPUT_ERROR`]), or no Fast Downward to run ([`ExitCode::USAGE`]).
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum BackendError {
+    #[error("--search {search}: {error}")]
+    Search {
+        search: String,
+        error: search::ConfigError,
+    },
+    #[error("{0}")]
+    NoFastDownward(String),
+}
+
+impl BackendError {
+    /// The exit code of a command that stops here.
+    pub fn exit_code(&self) -> ExitCode {
+        match self {
+            BackendError::Search { .. } => ExitCode::SEARCH_INPUT_ERROR,
+            BackendError::NoFastDownward(_) => ExitCode::USAGE,
+        }
+    }
+}
+
 impl Backend {
+    /// The backend `planner` names, with its search string (Fast Downward's syntax; for
+    /// demoplan, parsed now) and, for Fast Downward, its driver ([`FastDownward::locate`]).
+    pub fn new(
+        planner: PlannerName,
+        search: &str,
+        fd: Option<&std::path::Path>,
+    ) -> Result<Backend, BackendError> {
+        match planner {
+            PlannerName::Demoplan => {
+                search::parse_search(search)
+                    .map(Backend::Demoplan)
+                    .map_err(|error| BackendError::Search {
+                        search: search.to_string(),
+                        error,
+                    })
+            }
+            PlannerName::FastDownward => FastDownward::locate(fd)
+                .map(|driver| Backend::FastDownward(driver, search.to_string()))
+                .map_err(BackendError::NoFastDownward),
+        }
+    }
+
     /// Plans a domain and problem within `limits`, counted from now: one deadline and
     /// one memory limit for the whole run, translation included. With a
     /// [`MemoryProbe`], demoplan's run also measures its peak heap (Fast Downward
@@ -193,7 +238,20 @@ pub fn solve(
 
 #[cfg(test)]
 mod tests {
-    use super::PlannerName;
+    use super::{Backend, BackendError, ExitCode, PlannerName};
+
+    #[test]
+    fn a_backend_parses_demoplan_searches_and_needs_a_fast_downward() {
+        let backend = Backend::new(PlannerName::Demoplan, "astar(lmcut())", None);
+        assert!(matches!(backend, Ok(Backend::Demoplan(_))), "{backend:?}");
+        let e = Backend::new(PlannerName::Demoplan, "astar(nope())", None).unwrap_err();
+        assert_eq!(e.exit_code(), ExitCode::SEARCH_INPUT_ERROR);
+        assert!(e.to_string().starts_with("--search astar(nope()): "), "{e}");
+        let missing = std::path::Path::new("/nonexistent/fast-downward.py");
+        let e = Backend::new(PlannerName::FastDownward, "astar(lmcut())", Some(missing));
+        assert!(matches!(&e, Err(BackendError::NoFastDownward(_))), "{e:?}");
+        assert_eq!(e.unwrap_err().exit_code(), ExitCode::USAGE);
+    }
 
     #[test]
     fn planner_names_read_back_and_nothing_else_reads() {

@@ -165,6 +165,26 @@ pub enum TaskError {
 }
 
 impl Task {
+    /// A task from its parts, in the order of [`Task`]'s fields (and of an output.sas
+    /// file's sections); it is not validated ([`Task::validate`]).
+    pub fn new(
+        variables: Vec<Variable>,
+        mutexes: Vec<Vec<Fact>>,
+        initial_state: Vec<u32>,
+        goal: Vec<Fact>,
+        operators: Vec<Operator>,
+        use_costs: bool,
+    ) -> Task {
+        Task {
+            variables,
+            mutexes,
+            initial_state,
+            goal,
+            operators,
+            use_costs,
+        }
+    }
+
     /// For each variable, its position when variables are sorted by their atoms: the
     /// `Atom predicate(arguments)` value names, read as (predicate, arguments), each
     /// variable's sorted, variables compared by those lists (ties, such as variables without

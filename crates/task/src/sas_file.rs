@@ -262,7 +262,7 @@ pub fn read(text: &str) -> Result<Task, SasError> {
     }
 
     c.keyword("begin_state")?;
-    let mut initial_state = Vec::new();
+    let mut init = Vec::new();
     for (i, var) in variables.iter().enumerate() {
         let value = c.number::<u32>(&format!("the initial value of variable {i}"))?;
         if value >= var.domain_size() {
@@ -272,7 +272,7 @@ pub fn read(text: &str) -> Result<Task, SasError> {
                 var.domain_size()
             )));
         }
-        initial_state.push(value);
+        init.push(value);
     }
     c.keyword("end_state")?;
 
@@ -301,14 +301,7 @@ pub fn read(text: &str) -> Result<Task, SasError> {
     }
     c.end()?;
 
-    let task = Task {
-        variables,
-        mutexes,
-        initial_state,
-        goal,
-        operators,
-        use_costs,
-    };
+    let task = Task::new(variables, mutexes, init, goal, operators, use_costs);
     task.validate()?;
     Ok(task)
 }
@@ -972,16 +965,7 @@ end_operator
                 proptest::collection::vec(operator, 0..5),
                 any::<bool>(),
             )
-                .prop_map(
-                    |(variables, mutexes, initial_state, goal, operators, use_costs)| Task {
-                        variables,
-                        mutexes,
-                        initial_state,
-                        goal,
-                        operators,
-                        use_costs,
-                    },
-                )
+                .prop_map(|(v, m, i, g, o, u)| Task::new(v, m, i, g, o, u))
         })
     }
 

@@ -183,10 +183,10 @@ pub(crate) fn build(
     };
     let false_value = |s: Slot| has_none[s.var as usize];
 
-    let mut initial_state: Vec<u32> = has_none.iter().map(|h| h.unwrap_or(0)).collect();
+    let mut init: Vec<u32> = has_none.iter().map(|h| h.unwrap_or(0)).collect();
     for &a in &g.init {
         let s = slot(a)?;
-        initial_state[s.var as usize] = s.value;
+        init[s.var as usize] = s.value;
     }
 
     let mut operators = Vec::new();
@@ -299,14 +299,7 @@ pub(crate) fn build(
         .filter(|grp| grp.len() >= 2)
         .collect();
 
-    let task = Task {
-        variables,
-        mutexes,
-        initial_state,
-        goal,
-        operators,
-        use_costs: model.use_costs,
-    };
+    let task = Task::new(variables, mutexes, init, goal, operators, model.use_costs);
     let variables_before_relevance = task.variables.len();
     let task = variable_order::by_atoms(task);
     Ok(Built::Task(SasResult {

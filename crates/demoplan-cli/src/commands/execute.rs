@@ -1,8 +1,6 @@
 //! `demoplan execute DOMAIN PROBLEM PLAN`: the execution check in the cube world, step
 //! by step, with the plan and poses as JSON and the frames as a recording on request.
 
-use std::path::Path;
-
 use crate::cli::ExecuteArgs;
 use crate::diagnostic::Failure;
 use crate::input;
@@ -33,22 +31,17 @@ pub fn run(args: ExecuteArgs) -> Result<ExitCode, Failure> {
         write_atomically(path, &text)?;
     }
     if let Some(path) = &args.frames {
-        write_frames(path, &report.recording)?;
+        write_atomically_with(path, |out| {
+            report
+                .recording
+                .write(out)
+                .map(drop)
+                .map_err(std::io::Error::other)
+        })?;
     }
     Ok(if report.success() {
         ExitCode::SUCCESS
     } else {
         ExitCode::CHECK_FAILED
-    })
-}
-
-fn write_frames(path: &Path, rec: &recording::Recording) -> Result<(), Failure> {
-    write_atomically_with(path, |out| {
-        let mut writer = recording::Writer::new(out, &rec.header).map_err(std::io::Error::other)?;
-        for f in &rec.frames {
-            writer.write_frame(f).map_err(std::io::Error::other)?;
-        }
-        writer.finish().map_err(std::io::Error::other)?;
-        Ok(())
     })
 }

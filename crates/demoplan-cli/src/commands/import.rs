@@ -5,7 +5,6 @@ use std::collections::BTreeMap;
 
 use crate::cli::ImportArgs;
 use crate::diagnostic::Failure;
-use crate::output;
 use crate::progress::BytesBar;
 use crate::recording_input;
 use slim::ExitCode;
@@ -41,7 +40,7 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
 
     let mut text = String::new();
     for planned in &plan {
-        let (source, out) = (&planned.source, &planned.out);
+        let source = &planned.source;
         let mapping = &mappings[planned.format().name()];
         let size = planned.size();
         let passes = import::SOURCE_PASSES;
@@ -52,37 +51,14 @@ pub fn run(args: ImportArgs) -> Result<ExitCode, Failure> {
             (passes + 1) * size,
             size >= PROGRESS_FROM,
         );
-        let mut source_of_events = planned
-            .open(mapping, progress.counter())
-            .map_err(|e| recording_input::import_failure(source, &e))?;
-        let opened = progress
-            .counter()
-            .load(std::sync::atomic::Ordering::Relaxed);
-        progress.set_total(opened + passes * size);
-        let stem = &planned.stem;
-        let mut failure = None;
-        let mut result = None;
-        let written = output::write_atomically_with(out, |w| {
-            match import::import(source_of_events.as_mut(), mapping, stem, w) {
-                Ok((_, header, report)) => {
-                    result = Some((header, report));
-                    Ok(())
-                }
-                Err(e) => {
-                    failure = Some(recording_input::import_failure(source, &e));
-                    Err(std::io::Error::other("import failed"))
-                }
-            }
+        let imported = planned.import_file(mapping, progress.counter(), |opened| {
+            progress.set_total(opened + passes * size);
         });
         progress.finish();
-        if let Some(f) = failure {
-            return Err(f);
-        }
-        written?;
-        let Some((header, report)) = result else {
-            continue;
-        };
-        text.push_str(&planned.imported(&header, &report));
+        text.push_str(&imported.map_err(|e| match e {
+            import::BatchError::Import(e) => recording_input::import_failure(source, &e),
+            import::BatchError::Write(e) => Failure::plain(ExitCode::CRITICAL_ERROR, e),
+        })?);
     }
     text.push_str(&import::mappings_used(&mappings));
     print!("{text}");

@@ -3,9 +3,9 @@
 use std::path::Path;
 
 use learn::{
-    cards_markdown, cards_text, domain_text, levels, levels_table, operator_subset, summary_table,
-    DomainOptions, Library, LibraryFileError, LockError, Scene, Tower, TowerError, Update,
-    UpdateError,
+    cards_markdown, cards_text, chosen_domain, domain_text, levels, levels_table, summary_table,
+    DomainChoice, DomainOptions, Library, LibraryFileError, LockError, Scene, Tower, TowerError,
+    Update, UpdateError,
 };
 
 use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
@@ -108,22 +108,14 @@ pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
         print!("{}", levels_table(&all));
         return Ok(ExitCode::SUCCESS);
     };
-    let (operators, what) = if args.full {
-        let most = all.last().map_or(0, |l| l.prio);
-        (
-            operator_subset(&library, most.max(1), options),
-            "full domain".to_string(),
-        )
-    } else {
-        let prio = args
-            .prio
-            .map_or(1, |p| usize::try_from(p).unwrap_or(usize::MAX));
-        (
-            operator_subset(&library, prio, options),
-            format!("priority {prio}"),
-        )
+    let prio = args
+        .prio
+        .map_or(1, |p| usize::try_from(p).unwrap_or(usize::MAX));
+    let choice = match args.full {
+        true => DomainChoice::Full,
+        false => DomainChoice::Priority(prio),
     };
-    if operators.is_empty() {
+    let Some((operators, what)) = chosen_domain(&library, choice, options) else {
         return Err(Failure::plain(
             ExitCode::INPUT_ERROR,
             format!(
@@ -132,7 +124,7 @@ pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
                 args.library.display()
             ),
         ));
-    }
+    };
     write_atomically(&out, &domain_text(&library, &operators, &what))?;
     println!(
         "wrote {} ({what}: {} operators)",

@@ -20,11 +20,11 @@ pub mod validate;
 
 use crate::cli::Command;
 use crate::diagnostic::Failure;
-use crate::Invocation;
+use experiment::grid::Relaunch;
 use slim::ExitCode;
 
 /// Runs a parsed command.
-pub fn run(command: Command, this: &Invocation) -> Result<ExitCode, Failure> {
+pub fn run(command: Command, this: &Relaunch) -> Result<ExitCode, Failure> {
     match command {
         Command::Check(args) => check::run(args),
         Command::Fmt(args) => fmt::run(args),

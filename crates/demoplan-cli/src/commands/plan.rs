@@ -12,13 +12,14 @@ use slim::ExitCode;
 use task::memory;
 use task::units::{parse_memory_limit, parse_time_limit};
 
-/// `--memory-limit` of `solve`, `reproduce`, `study`: as [`parse_memory_limit`], or
-/// `auto` ([`experiment::auto_memory_limit`]).
-pub fn parse_run_memory_limit(text: &str, runs_at_once: usize) -> Result<Option<u64>, Failure> {
-    if text.trim().eq_ignore_ascii_case("auto") {
-        return Ok(experiment::auto_memory_limit(runs_at_once));
-    }
-    parse_memory_limit(text)
+/// `--memory-limit` of `solve`, `reproduce`, `study` (`experiment::grid::memory_limit`:
+/// `auto` is shared by the runs at once, or fixed on a grid written for Slurm).
+pub fn parse_run_memory_limit(
+    text: &str,
+    runs_at_once: usize,
+    slurm: bool,
+) -> Result<Option<u64>, Failure> {
+    experiment::grid::memory_limit(text, runs_at_once, slurm)
         .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--memory-limit: {e}")))
 }
 
@@ -44,17 +45,11 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         .map_err(usage)?
         .flatten();
     let search_string = match (&args.search, &args.alias) {
-        (Some(s), _) => s.clone(),
-        (None, Some(a)) => search::alias(a).map(str::to_string).ok_or_else(|| {
-            let known: Vec<&str> = search::ALIASES.iter().map(|(name, _)| *name).collect();
-            usage(format!(
-                "unknown alias `{a}`; known aliases: {}",
-                known.join(", ")
-            ))
-        })?,
+        (Some(s), _) => s.as_str(),
+        (None, Some(a)) => search::alias(a).map_err(|e| usage(e.to_string()))?,
         (None, None) => return Err(usage("give a search with --search or --alias".into())),
     };
-    let config = search::parse_search(&search_string)
+    let config = search::parse_search(search_string)
         .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, format!("--search: {e}")))?;
     // Like Fast Downward, never leave an old plan behind that could be mistaken for this
     // run's.

@@ -10,7 +10,7 @@ use crate::cli::{FastDownwardArgs, GridArgs, ReproduceArgs, SlurmArgs};
 use crate::commands::plan::parse_run_memory_limit;
 use crate::diagnostic::Failure;
 use crate::progress::Bar;
-use crate::Invocation;
+use experiment::grid::Relaunch;
 use slim::ExitCode;
 
 /// An experiment's error as a failure with its exit code
@@ -37,46 +37,13 @@ pub fn fast_downward(args: &FastDownwardArgs) -> Result<Option<FastDownward>, Fa
         .map_err(|e| Failure::plain(ExitCode::USAGE, e))
 }
 
-/// The grid's cells at once: `-j N`, else the number of cores.
-pub fn jobs(grid: &GridArgs) -> usize {
-    grid.jobs.map_or_else(
-        || std::thread::available_parallelism().map_or(1, usize::from),
-        |n| n as usize,
-    )
-}
-
-/// How the grid's cells run, each in a child process: `this` (the command that runs
-/// demoplan again) with the grid's command line `argv`, `--cell ID` and the memory limit
-/// this process resolved (the last `--memory-limit` wins: `auto` again in a child would
-/// count its siblings).
-pub fn cell_command(
-    jobs: usize,
-    memory_limit: Option<u64>,
-    this: &Invocation,
-) -> experiment::CellCommand {
-    let bytes = memory_limit.map_or("infinity".to_string(), |b| b.to_string());
-    experiment::CellCommand {
-        program: this.program[0].clone().into(),
-        args: (this.program[1..].iter().chain(&this.argv).cloned())
-            .chain(["--memory-limit".into(), bytes.into()])
-            .collect(),
-        jobs,
-    }
-}
-
-/// The memory limit per cell: `--memory-limit`, where `auto` on a grid written for
-/// Slurm is [`experiment::grid::slurm::AUTO_MEMORY_LIMIT`].
+/// The memory limit per cell: `--memory-limit` ([`parse_run_memory_limit`]).
 pub fn grid_memory_limit(
     text: &str,
     jobs: usize,
     slurm: &SlurmArgs,
 ) -> Result<Option<u64>, Failure> {
-    match slurm.slurm {
-        Some(_) if !slurm.collect && text.trim().eq_ignore_ascii_case("auto") => {
-            Ok(Some(experiment::grid::slurm::AUTO_MEMORY_LIMIT))
-        }
-        _ => parse_run_memory_limit(text, jobs),
-    }
+    parse_run_memory_limit(text, jobs, slurm.slurm.is_some() && !slurm.collect)
 }
 
 /// `--slurm DIR`: writes the grid `cells` as Slurm jobs into DIR and runs nothing.
@@ -86,18 +53,9 @@ pub fn write_slurm(
     name: &str,
     cells: Result<Vec<experiment::Cell>, experiment::ExperimentError>,
     memory_limit: Option<u64>,
-    this: &Invocation,
+    this: &Relaunch,
 ) -> Result<ExitCode, Failure> {
-    use experiment::grid::slurm::{write_job, GridCommand, SlurmOptions};
-    let here = |e: std::io::Error| Failure::plain(ExitCode::USAGE, format!("--slurm: {e}"));
-    let command = GridCommand {
-        program: this.program[0].clone().into(),
-        args: (this.program[1..].iter().chain(&this.argv).cloned()).collect(),
-        workdir: std::env::current_dir().map_err(here)?,
-        name: name.into(),
-        memory_limit,
-    };
-    let options = SlurmOptions {
+    let options = experiment::grid::slurm::SlurmOptions {
         partition: args.slurm_partition.clone(),
         cpus_per_task: args.slurm_cpus_per_task,
         mem: args.slurm_mem,
@@ -106,34 +64,30 @@ pub fn write_slurm(
         max_running: args.slurm_max_running as usize,
         seed: args.slurm_seed,
         sbatch: args.slurm_sbatch.clone(),
-        ..SlurmOptions::new(dir)
+        ..experiment::grid::slurm::SlurmOptions::new(dir)
     };
-    let job = cells.and_then(|cells| write_job(&cells, &command, &options));
+    let job = cells.and_then(|cells| this.write_slurm(name, &cells, memory_limit, &options));
     print!("{}", job.map_err(experiment_failure)?.summary());
     Ok(ExitCode::SUCCESS)
 }
 
-/// What a grid command does before its grid: `--list-cells` prints the cells, `--cell
-/// ID` computes one (printing its record as one JSON line); `None` runs the grid.
+/// `--list-cells` or `--cell ID` (`experiment::grid::cell_or_list`), printed; `None`
+/// runs the grid.
 pub fn cell_or_list(
     grid: &GridArgs,
     cells: impl FnOnce() -> Result<Vec<experiment::Cell>, experiment::ExperimentError>,
     cell: impl FnOnce(&str) -> Result<experiment::RunRecord, experiment::ExperimentError>,
 ) -> Option<Result<ExitCode, Failure>> {
-    let print = |text: Result<String, experiment::ExperimentError>| {
-        print!("{}", text.map_err(experiment_failure)?);
-        Ok(ExitCode::SUCCESS)
-    };
-    if grid.list_cells {
-        return Some(print(cells().map(|c| experiment::cell_list(&c))));
-    }
-    let id = grid.cell.as_deref()?;
-    Some(print(cell(id).map(|r| r.to_json_line() + "\n")))
+    let text = experiment::grid::cell_or_list(grid.list_cells, grid.cell.as_deref(), cells, cell)?;
+    Some(text.map_err(experiment_failure).map(|text| {
+        print!("{text}");
+        ExitCode::SUCCESS
+    }))
 }
 
-pub fn run(args: ReproduceArgs, this: &Invocation) -> Result<ExitCode, Failure> {
+pub fn run(args: ReproduceArgs, this: &Relaunch) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let jobs = jobs(&args.grid);
+    let jobs = experiment::grid::jobs(args.grid.jobs);
     let memory_limit = grid_memory_limit(&args.limits.memory_limit, jobs, &args.slurm)?;
     let options = experiment::ReproduceOptions {
         out: args.out,
@@ -146,7 +100,7 @@ pub fn run(args: ReproduceArgs, this: &Invocation) -> Result<ExitCode, Failure> 
         hands: args.hands as usize,
         memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
-        children: Some(cell_command(jobs, memory_limit, this)),
+        children: Some(this.cells(jobs, memory_limit)),
         force: args.grid.force,
         collect_only: args.slurm.collect,
     };

@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use learn::DomainOptions;
-use slim::{Backend, FastDownward, PlannerName};
+use slim::Backend;
 
 use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
@@ -23,7 +23,8 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
             .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))?,
         None => None,
     };
-    let memory_limit = crate::commands::plan::parse_run_memory_limit(&args.limits.memory_limit, 1)?;
+    let memory_limit =
+        crate::commands::plan::parse_run_memory_limit(&args.limits.memory_limit, 1, false)?;
     let limits = slim::RunLimits {
         time: time_limit,
         memory_bytes: memory_limit,
@@ -31,21 +32,8 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
     };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
-    let backend = match args.planner {
-        PlannerName::Demoplan => {
-            Backend::Demoplan(search::parse_search(&args.search).map_err(|e| {
-                Failure::plain(
-                    ExitCode::SEARCH_INPUT_ERROR,
-                    format!("--search {}: {e}", args.search),
-                )
-            })?)
-        }
-        PlannerName::FastDownward => Backend::FastDownward(
-            FastDownward::locate(args.fd.as_deref())
-                .map_err(|e| Failure::plain(ExitCode::USAGE, e))?,
-            args.search.clone(),
-        ),
-    };
+    let backend = Backend::new(args.planner, &args.search, args.fd.as_deref())
+        .map_err(|e| Failure::plain(e.exit_code(), e))?;
     let options = DomainOptions {
         keep_without_effects: args.keep_without_effects,
     };

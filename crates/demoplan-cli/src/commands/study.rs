@@ -4,13 +4,12 @@
 
 use crate::cli::StudyArgs;
 use crate::commands::reproduce::{
-    cell_command, cell_or_list, experiment_failure, fast_downward, grid_memory_limit, jobs,
-    time_limit, write_slurm,
+    cell_or_list, experiment_failure, fast_downward, grid_memory_limit, time_limit, write_slurm,
 };
 use crate::diagnostic::Failure;
 use crate::input;
 use crate::progress::Bar;
-use crate::Invocation;
+use experiment::grid::Relaunch;
 use slim::ExitCode;
 
 fn usage(option: &str, message: String) -> Failure {
@@ -27,7 +26,7 @@ fn sizes(option: &str, text: &str) -> Result<Vec<usize>, Failure> {
     experiment::sizes(text).map_err(|e| usage(option, e))
 }
 
-pub fn run(args: StudyArgs, this: &Invocation) -> Result<ExitCode, Failure> {
+pub fn run(args: StudyArgs, this: &Relaunch) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
     let params = input::sim_params(args.params.as_deref())?;
     let mut activities: Vec<String> = args
@@ -36,7 +35,7 @@ pub fn run(args: StudyArgs, this: &Invocation) -> Result<ExitCode, Failure> {
         .map(|a| a.trim().to_string())
         .collect();
     activities.dedup();
-    let jobs = jobs(&args.grid);
+    let jobs = experiment::grid::jobs(args.grid.jobs);
     let memory_limit = grid_memory_limit(&args.limits.memory_limit, jobs, &args.slurm)?;
     let options = experiment::StudyOptions {
         out: args.out,
@@ -54,7 +53,7 @@ pub fn run(args: StudyArgs, this: &Invocation) -> Result<ExitCode, Failure> {
         fast_downward: fast_downward(&args.fast_downward)?,
         memory: Some(slim::MemoryProbe::counting()),
         memory_limit,
-        children: Some(cell_command(jobs, memory_limit, this)),
+        children: Some(this.cells(jobs, memory_limit)),
         force: args.grid.force,
         collect_only: args.slurm.collect,
     };

@@ -13,12 +13,14 @@
 
 mod children;
 pub mod properties;
+mod relaunch;
 pub mod slurm;
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 pub use children::CellCommand;
+pub use relaunch::{cell_or_list, jobs, memory_limit, Relaunch};
 
 use crate::cell::{Cell, LevelChoice};
 use crate::lab::{Known, Lab};
@@ -341,7 +343,7 @@ pub fn cell_list(cells: &[Cell]) -> String {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::cell::{Conditions, Planner};
     use std::time::Duration;
@@ -354,7 +356,7 @@ mod tests {
         assert_eq!(RunLayout::run_dir_name(12345), "runs-12301-12400/12345");
     }
 
-    fn cell(seed: u64) -> Cell {
+    pub(crate) fn cell(seed: u64) -> Cell {
         Cell {
             conditions: Conditions::paper_goal(seed, 1, 1),
             level: LevelChoice::Prio(1),

@@ -199,6 +199,8 @@ pub struct PlanArgs {
     /// (PDDL input only).
     #[arg(long)]
     pub validate: bool,
+    #[command(flatten)]
+    pub translator: translate::TranslateOptions,
 }
 
 /// The options of `translate`.
@@ -210,6 +212,8 @@ pub struct TranslateArgs {
     /// Where to write the task.
     #[arg(long, value_name = "FILE", default_value = "output.sas")]
     pub sas_file: PathBuf,
+    #[command(flatten)]
+    pub translator: translate::TranslateOptions,
 }
 
 /// The options of `validate`.

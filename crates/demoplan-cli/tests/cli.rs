@@ -435,6 +435,92 @@ fn translate_writes_output_sas_that_plan_reads_back() {
     assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(6));
 }
 
+/// h² proves `both` never applies (`p` is gone for good once `q` holds), which neither
+/// relaxed reachability nor invariant synthesis sees (`make-q` adds `q` deleting nothing).
+#[test]
+fn translator_options_prune_log_and_go_into_output_sas_and_stats_json() {
+    let tmp = tempdir("translator-options");
+    let (d, p) = write_task(
+        &tmp,
+        "(define (domain h) (:requirements :strips :negative-preconditions :action-costs)
+           (:predicates (p) (q) (g)) (:functions (total-cost) - number)
+           (:action drop-p :parameters () :precondition (p) :effect (and (not (p)) (increase (total-cost) 1)))
+           (:action make-q :parameters () :precondition (not (p)) :effect (and (q) (increase (total-cost) 1)))
+           (:action both :parameters () :precondition (and (p) (q)) :effect (and (g) (increase (total-cost) 1)))
+           (:action one :parameters () :precondition (q) :effect (and (g) (increase (total-cost) 5))))",
+        "(define (problem h1) (:domain h) (:init (p) (= (total-cost) 0)) (:goal (g))
+           (:metric minimize (total-cost)))",
+    );
+    let translate = |options: &[&str]| {
+        let out = succeeds(
+            demoplan()
+                .current_dir(&tmp)
+                .arg("translate")
+                .args([&d, &p])
+                .args(options),
+        );
+        (
+            stdout_text(&out),
+            std::fs::read_to_string(tmp.join("output.sas")).unwrap(),
+        )
+    };
+    let (log, sas) = translate(&[]);
+    assert!(
+        log.contains("Translator operators: 4") && !log.contains("h2:"),
+        "{log}"
+    );
+    assert!(
+        !sas.contains(" ; "),
+        "Fast Downward's translation carries no comment"
+    );
+    let (log, sas) = translate(&["--h2-mutexes"]);
+    for line in [
+        "Translator option h2_mutexes: true",
+        "Translator option remove_dominated_operators: false",
+        "h2: removed 1 unreachable operator(s)",
+        "h2: removed 0 unreachable fact(s)",
+        "Translator operators: 3",
+    ] {
+        assert!(log.contains(line), "{line} missing in {log}");
+    }
+    assert!(
+        sas.contains(" ; translated by demoplan with --h2-mutexes; h2 removed 1 operator(s)"),
+        "{sas}"
+    );
+    let out = succeeds(demoplan().current_dir(&tmp).args([
+        "plan",
+        "output.sas",
+        "--search",
+        "astar(blind())",
+    ]));
+    assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(7));
+    let out = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("plan")
+            .args([&d, &p])
+            .args([
+                "--search",
+                "astar(lmcut())",
+                "--h2-mutexes",
+                "--remove-dominated-operators",
+                "--stats-json",
+                "stats.json",
+            ]),
+    );
+    assert!(stdout_text(&out).contains("Removed 0 dominated operator(s)"));
+    let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+    for field in [
+        "\"h2_mutexes\": true",
+        "\"h2_operators_removed\": 1",
+        "\"remove_dominated_operators\": true",
+        "\"dominated_operators_removed\": 0",
+        "\"plan_cost\": 7",
+    ] {
+        assert!(json.contains(field), "{field} missing in {json}");
+    }
+}
+
 fn write_task(dir: &Path, domain: &str, problem: &str) -> (PathBuf, PathBuf) {
     let d = dir.join("domain.pddl");
     let p = dir.join("problem.pddl");

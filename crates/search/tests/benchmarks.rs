@@ -344,3 +344,45 @@ fn ipdb_climbs_as_fast_downward() {
         );
     }
 }
+
+/// The translator's options keep the optimal cost on real tasks: `astar(lmcut())` on the
+/// task with h² alone and with h² and dominated operators removed finds the known
+/// optimum (and LM-cut's plan replays on the pruned task), and h² removes something on
+/// some of them.
+#[test]
+fn translator_options_keep_the_optimum_on_benchmark_instances() {
+    let h2 = translate::TranslateOptions {
+        h2_mutexes: true,
+        ..Default::default()
+    };
+    let both = translate::TranslateOptions {
+        remove_dominated_operators: true,
+        ..h2
+    };
+    let mut removed = 0;
+    for &(domain, instance) in SMALL_INSTANCES.iter() {
+        let i = benchmarks::Suite::locate()
+            .and_then(|suite| suite.instance(domain, instance))
+            .unwrap();
+        let d = pddl::parse_domain(&std::fs::read_to_string(&i.domain_file).unwrap()).unwrap();
+        let p = pddl::parse_problem(&std::fs::read_to_string(&i.problem_file).unwrap()).unwrap();
+        for options in [h2, both] {
+            let limits = task::Limits::default();
+            let translation = translate::translate_with_options(&d, &p, &limits, &options);
+            let translate::Translation::Task(t) = translation.unwrap() else {
+                panic!("{domain}/{instance} {options:?}: not a task")
+            };
+            let h2 = t.stats.h2.unwrap();
+            removed += h2.operators_removed + h2.facts_removed;
+            let mut h = LmCut::new(&t.task).unwrap();
+            let result = astar(&t.task, &mut h, &SearchLimits::default(), None);
+            let Outcome::Solved(plan) = result.unwrap().outcome else {
+                panic!("{domain}/{instance} {options:?}: not solved")
+            };
+            assert_eq!(plan.cost, i.optimal_cost, "{domain}/{instance} {options:?}");
+            let end = search::replay(&t.task, &plan.operators).unwrap();
+            assert!(t.task.is_goal(&end));
+        }
+    }
+    assert!(removed > 0, "h² removed nothing on any instance");
+}

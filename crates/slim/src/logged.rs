@@ -51,6 +51,9 @@ pub struct LoggedRun {
     pub statistics: Option<search::Statistics>,
     /// The searched task's sizes; `None` where the run ended before a search.
     pub sizes: Option<task::TaskSizes>,
+    /// The translation's statistics (its options among them); `None` for a task given
+    /// as it is.
+    pub translator: Option<translate::TranslateStats>,
 }
 
 /// Plans `input` with `config` under `limits`, every time measured from `start` (the
@@ -64,6 +67,21 @@ pub fn plan_logged(
     start: Instant,
     log: &mut dyn FnMut(&str),
 ) -> Result<LoggedRun, RunError> {
+    let mut translator = None;
+    let mut logged = plan_logged_with(input, config, limits, start, log, &mut translator)?;
+    logged.translator = translator;
+    Ok(logged)
+}
+
+/// [`plan_logged`], leaving the translation's statistics in `translator`.
+fn plan_logged_with(
+    input: PlanInput<'_>,
+    config: &search::SearchConfig,
+    limits: &task::Limits,
+    start: Instant,
+    log: &mut dyn FnMut(&str),
+    translator: &mut Option<translate::TranslateStats>,
+) -> Result<LoggedRun, RunError> {
     let translated;
     let task = match input {
         PlanInput::Task(task) => task,
@@ -76,6 +94,11 @@ pub fn plan_logged(
             for line in translation.log().lines() {
                 log(line);
             }
+            *translator = Some(match &translation {
+                translate::Translation::Task(t) => t.stats.clone(),
+                translate::Translation::Unsolvable { stats, .. }
+                | translate::Translation::Stopped { stats, .. } => stats.clone(),
+            });
             log(&format!(
                 "Translation done! [{:.3}s wall-clock]",
                 start.elapsed().as_secs_f64()
@@ -176,6 +199,7 @@ pub fn plan_logged(
         run,
         statistics: Some(statistics),
         sizes: Some(task.sizes()),
+        translator: None,
     })
 }
 
@@ -203,6 +227,7 @@ fn ended_before_search(outcome: Outcome, translate_time: Duration, start: Instan
         run,
         statistics: None,
         sizes: None,
+        translator: None,
     }
 }
 
@@ -307,6 +332,7 @@ impl LoggedRun {
             search_time_s: s.map(|s| seconds(s.search_time)),
             total_time_s: seconds(self.run.total_time),
             translate_time_s: seconds(self.run.translate_time),
+            translator: self.translator.as_ref().map(TranslatorRecord::from),
             variables: self.sizes.map(|z| z.variables),
         }
     }
@@ -352,8 +378,45 @@ pub struct StatisticsRecord {
     pub total_time_s: f64,
     /// Translation (or reading the task) in seconds.
     pub translate_time_s: f64,
+    /// The translator's options and what they removed; `null` for a task given as it is.
+    pub translator: Option<TranslatorRecord>,
     /// Variables of the searched task.
     pub variables: Option<usize>,
+}
+
+/// The translator's options (`--h2-mutexes`, `--remove-dominated-operators`) and what
+/// they removed, in `--stats-json`; the counts are `null` where the option was off.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct TranslatorRecord {
+    /// Operators `--remove-dominated-operators` removed.
+    pub dominated_operators_removed: Option<usize>,
+    /// Unreachable facts h² removed.
+    pub h2_facts_removed: Option<usize>,
+    /// Whether h² ran (`--h2-mutexes`).
+    pub h2_mutexes: bool,
+    /// Mutex pairs h² added.
+    pub h2_mutexes_added: Option<usize>,
+    /// Operators h² removed.
+    pub h2_operators_removed: Option<usize>,
+    /// Constant variables h² removed.
+    pub h2_variables_removed: Option<usize>,
+    /// Whether dominated operators were removed (`--remove-dominated-operators`).
+    pub remove_dominated_operators: bool,
+}
+
+impl From<&translate::TranslateStats> for TranslatorRecord {
+    fn from(s: &translate::TranslateStats) -> TranslatorRecord {
+        let options = s.options;
+        TranslatorRecord {
+            dominated_operators_removed: s.dominated_operators_removed,
+            h2_facts_removed: s.h2.map(|h| h.facts_removed),
+            h2_mutexes: options.h2_mutexes,
+            h2_mutexes_added: s.h2.map(|h| h.mutexes_added),
+            h2_operators_removed: s.h2.map(|h| h.operators_removed),
+            h2_variables_removed: s.h2.map(|h| h.variables_removed),
+            remove_dominated_operators: options.remove_dominated_operators,
+        }
+    }
 }
 
 /// Partial-order reduction's numbers in `--stats-json`: the closing lines' counts and

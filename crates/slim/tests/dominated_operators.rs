@@ -1,7 +1,7 @@
 //! Dominated operators in a learned domain: the paper's study's priority-6 domain (seed 7,
 //! calibrated costs) has `put2`-style variants, the same effects as another operator with
 //! more preconditions and a higher cost. Removing them (`TranslateOptions`) keeps the
-//! optimal cost, says how many went, and leaves a smaller task.
+//! optimal cost, says how many went, and leaves a smaller task; with h² before it too.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
@@ -21,14 +21,12 @@ fn removing_dominated_operators_of_a_learned_domain_keeps_the_optimal_cost() {
     let problem = pddl::parse_problem(&fixture("goal-2.pddl")).unwrap();
     pddl::check_problem(&domain, &problem).unwrap();
     let config = search::parse_search("astar(lmcut())").unwrap();
-    let run = |remove_dominated_operators| {
+    let run = |options: translate::TranslateOptions| {
         let mut lines = Vec::new();
         let input = slim::PlanInput::Pddl {
             domain: &domain,
             problem: &problem,
-            options: translate::TranslateOptions {
-                remove_dominated_operators,
-            },
+            options,
         };
         let logged = slim::plan_logged(
             input,
@@ -40,8 +38,12 @@ fn removing_dominated_operators_of_a_learned_domain_keeps_the_optimal_cost() {
         .unwrap();
         (logged, lines)
     };
-    let (full, full_log) = run(false);
-    let (pruned, pruned_log) = run(true);
+    let dominated = translate::TranslateOptions {
+        remove_dominated_operators: true,
+        ..Default::default()
+    };
+    let (full, full_log) = run(Default::default());
+    let (pruned, pruned_log) = run(dominated);
     assert!(!full_log.iter().any(|l| l.contains("dominated")));
     let removed: usize = pruned_log
         .iter()
@@ -63,7 +65,18 @@ fn removing_dominated_operators_of_a_learned_domain_keeps_the_optimal_cost() {
     assert_eq!(operators(&pruned_log) + removed, operators(&full_log));
     assert_eq!(full.run.outcome, slim::Outcome::Solved);
     assert_eq!(pruned.run.cost, full.run.cost);
-    for (name, run) in [("full", &full), ("pruned", &pruned)] {
+    // With h² first, the cost stays too.
+    let (both, both_log) = run(translate::TranslateOptions {
+        h2_mutexes: true,
+        ..dominated
+    });
+    assert!(both_log.iter().any(|l| l.starts_with("h2: added ")));
+    assert_eq!(both.run.cost, full.run.cost);
+    for (name, run) in [
+        ("full", &full),
+        ("pruned", &pruned),
+        ("h2 and pruned", &both),
+    ] {
         let s = run.statistics.unwrap();
         eprintln!(
             "{name}: {} operators, {} expanded, {} generated, search {:?}",

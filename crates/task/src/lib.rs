@@ -29,6 +29,8 @@
 pub mod limits;
 pub mod memory;
 pub mod sas_file;
+#[cfg(feature = "testing")]
+pub mod testing;
 pub mod units;
 
 pub use limits::{deadline_after, Deadline, Limit, Limits};

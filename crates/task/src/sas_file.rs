@@ -122,11 +122,21 @@ impl SasError {
 /// no name contains a line break, and variable names are single words (Fast Downward
 /// reads them as such); names are written as they are, never altered.
 pub fn write(task: &Task) -> String {
-    Sas(task).to_string()
+    Sas(task, None).to_string()
 }
 
-/// [`write`]'s formatter.
-struct Sas<'a>(&'a Task);
+/// Like [`write`], with `comment` (its line breaks made spaces) on the first variable's
+/// name line: `var0 ; COMMENT`. The format has no comment lines, and Fast Downward
+/// (26.6) rejects any text after the axioms; it takes a variable's whole name line as
+/// its name (a name only its logs show), and [`read`] takes the word before ` ; `. An
+/// empty comment, or a task without variables, is written as [`write`] writes it.
+pub fn write_commented(task: &Task, comment: &str) -> String {
+    let comment = comment.replace(['\n', '\r'], " ");
+    Sas(task, Some(comment.as_str()).filter(|c| !c.is_empty())).to_string()
+}
+
+/// [`write`]'s formatter, with [`write_commented`]'s comment.
+struct Sas<'a>(&'a Task, Option<&'a str>);
 
 impl fmt::Display for Sas<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -134,11 +144,13 @@ impl fmt::Display for Sas<'_> {
         writeln!(f, "begin_version\n{VERSION}\nend_version")?;
         writeln!(f, "begin_metric\n{}\nend_metric", u8::from(task.use_costs))?;
         writeln!(f, "{}", task.variables.len())?;
-        for var in &task.variables {
+        for (i, var) in task.variables.iter().enumerate() {
+            let comment = self.1.filter(|_| i == 0).map(|c| format!(" ; {c}"));
             writeln!(
                 f,
-                "begin_variable\n{}\n-1\n{}",
+                "begin_variable\n{}{}\n-1\n{}",
                 var.name,
+                comment.unwrap_or_default(),
                 var.value_names.len()
             )?;
             for value in &var.value_names {
@@ -204,7 +216,8 @@ fn write_operator(f: &mut fmt::Formatter<'_>, op: &Operator) -> fmt::Result {
 /// Reads a task from Fast Downward's `output.sas` text.
 ///
 /// Keywords and numbers may carry surrounding spaces; names and value names are taken
-/// verbatim from their lines. Preconditions (prevail conditions and the `PRE` of effect
+/// verbatim from their lines (a variable's name line may end in a comment, ` ; ...`,
+/// which is dropped: see [`write_commented`]). Preconditions (prevail conditions and the `PRE` of effect
 /// lines) are merged and sorted by variable, as are effects and the goal; mutex groups
 /// keep the file's order. Blank lines may follow the axiom count, nothing else.
 ///
@@ -303,7 +316,9 @@ fn without_carriage_returns(line: &str) -> String {
 
 fn read_variable(c: &mut Cursor<'_>) -> Result<Variable, SasError> {
     c.keyword("begin_variable")?;
-    let name = c.next_line("a variable name")?;
+    let line = c.next_line("a variable name")?;
+    // `NAME ; COMMENT`, as `write_commented` writes the first variable.
+    let name = line.split_once(" ; ").map_or(line, |(name, _)| name);
     if name.is_empty() || name.contains(char::is_whitespace) {
         return Err(c.syntax("a variable name (one word)"));
     }
@@ -717,6 +732,32 @@ end_operator
             .replace('\n', "\r\n")
             + "\n \n";
         assert_eq!(read(&text), Ok(small_task()));
+    }
+
+    #[test]
+    fn a_comment_on_the_first_name_line_reads_back_as_the_task() {
+        let task = small_task();
+        let text = write_commented(&task, "translator options: h2_mutexes\nmore");
+        let first = text.lines().position(|l| l == "begin_variable").unwrap() + 1;
+        let name_line = text.lines().nth(first).unwrap();
+        assert_eq!(
+            name_line,
+            format!(
+                "{} ; translator options: h2_mutexes more",
+                task.variables[0].name
+            )
+        );
+        assert_eq!(
+            text.matches(" ; ").count(),
+            1,
+            "only the first variable's line"
+        );
+        assert_eq!(read(&text), Ok(task.clone()));
+        assert_eq!(write_commented(&task, ""), write(&task));
+        assert!(
+            read(&SMALL.replacen("var0", "var0 ;x", 1)).is_err(),
+            "` ; ` with its spaces"
+        );
     }
 
     /// Found by fuzzing (`fuzz/run`, target `sas_file`): an operator name ending in

@@ -79,17 +79,8 @@ fn is_subset(small: &[Fact], large: &[Fact]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use task::testing::op;
     use task::{Operator, VarId, Variable};
-
-    fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Operator {
-        let facts = |fs: &[(u32, u32)]| fs.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect();
-        Operator {
-            name: name.into(),
-            preconditions: facts(pre),
-            effects: facts(eff),
-            cost,
-        }
-    }
 
     fn task(operators: Vec<Operator>) -> Task {
         Task {

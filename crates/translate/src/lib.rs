@@ -34,6 +34,7 @@
 
 mod dominated;
 mod ground;
+mod h2;
 mod invariants;
 mod log;
 mod model;
@@ -42,6 +43,7 @@ mod variable_order;
 mod watch;
 
 pub use dominated::remove_dominated_operators;
+pub use h2::{h2_mutexes, H2Outcome, H2Stats};
 
 /// What translation can fail on, beyond what the PDDL checker already rejects.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
@@ -86,16 +88,42 @@ pub struct TranslateStats {
     /// Dominated operators removed ([`TranslateOptions::remove_dominated_operators`]);
     /// `None` when that was not asked for.
     pub dominated_operators_removed: Option<usize>,
+    /// What h² removed and found ([`TranslateOptions::h2_mutexes`]); `None` when that
+    /// was not asked for.
+    pub h2: Option<H2Stats>,
+    /// The options the translation ran with.
+    pub options: TranslateOptions,
 }
 
 /// What the translator does beyond Fast Downward's translation; the default is exactly
-/// Fast Downward's (its variables, values and operators, in its order).
+/// Fast Downward's (its variables, values and operators, in its order). With the `clap`
+/// feature these are the command line's options of `translate` and `plan`, declared
+/// once here (the doc comments of the fields are their `--help` texts). Each option
+/// keeps the optimal cost and solvability; both on run h² first.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
 pub struct TranslateOptions {
-    /// `--remove-dominated-operators`: drop every operator another with the same effects,
-    /// a subset of its preconditions and no higher cost dominates
-    /// ([`remove_dominated_operators`]). Keeps the optimal cost.
+    /// Remove what h² proves unreachable (operators, facts) and add the mutexes it finds
+    #[cfg_attr(feature = "clap", arg(long, help_heading = "Translator options"))]
+    pub h2_mutexes: bool,
+    /// Remove each operator another dominates: same effects, a subset of its preconditions, no
+    /// higher cost
+    #[cfg_attr(feature = "clap", arg(long, help_heading = "Translator options"))]
     pub remove_dominated_operators: bool,
+}
+
+impl TranslateOptions {
+    /// The options in Fast Downward's log style (`Translator option h2_mutexes: true`),
+    /// one line each, without newlines.
+    pub fn log_lines(&self) -> [String; 2] {
+        [
+            format!("Translator option h2_mutexes: {}", self.h2_mutexes),
+            format!(
+                "Translator option remove_dominated_operators: {}",
+                self.remove_dominated_operators
+            ),
+        ]
+    }
 }
 
 /// A translated task with statistics.
@@ -187,8 +215,22 @@ pub fn translate_within(
 }
 
 /// Like [`translate_within`], with `options` beyond Fast Downward's translation, applied
-/// to the finished task under the same limits.
+/// to the finished task under the same limits (h² first, then dominated operators).
 pub fn translate_with_options(
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    limits: &task::Limits,
+    options: &TranslateOptions,
+) -> Result<Translation, TranslateError> {
+    let mut translation = translate_stages(domain, problem, limits, options)?;
+    let (Translation::Task(TranslatedTask { stats, .. })
+    | Translation::Unsolvable { stats, .. }
+    | Translation::Stopped { stats, .. }) = &mut translation;
+    stats.options = *options;
+    Ok(translation)
+}
+
+fn translate_stages(
     domain: &pddl::Domain,
     problem: &pddl::Problem,
     limits: &task::Limits,
@@ -251,6 +293,13 @@ pub fn translate_with_options(
     }
     stats.variables_before_relevance = result.variables_before_relevance;
     let mut task = result.task;
+    if options.h2_mutexes {
+        match h2::run(&mut task, &watch) {
+            H2Outcome::Pruned(h2) => stats.h2 = Some(h2),
+            H2Outcome::Unsolvable(reason) => return Ok(Translation::Unsolvable { reason, stats }),
+            H2Outcome::Stopped(_) => return stopped(stats),
+        }
+    }
     if options.remove_dominated_operators {
         let removed = remove_dominated_operators(&mut task, &mut || watch.check());
         stats.dominated_operators_removed = Some(removed);

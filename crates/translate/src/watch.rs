@@ -52,6 +52,16 @@ impl<'l> Watch<'l> {
         self.stopped.get().is_some()
     }
 
+    /// True if allocating `bytes` more would exceed the memory limit (then the watch
+    /// stops at it), or a limit has been reached already: the check before a large
+    /// allocation.
+    pub(crate) fn would_exceed(&self, bytes: u64) -> bool {
+        if !self.check() && self.limits.would_exceed(bytes, || 0) {
+            self.stopped.set(Some(Limit::Memory));
+        }
+        self.stopped.get().is_some()
+    }
+
     /// The limit reached, if one was.
     pub(crate) fn stopped(&self) -> Option<Limit> {
         self.stopped.get()

@@ -7,41 +7,9 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
-use std::cmp::Reverse;
-use std::collections::{BinaryHeap, HashMap};
-
 use proptest::prelude::*;
+use task::testing::optimal_cost;
 use task::{Fact, Operator, Task, VarId, Variable};
-
-/// Uniform-cost search on the finite-domain task.
-fn optimal_cost(task: &Task) -> Option<u64> {
-    let mut best: HashMap<Vec<u32>, u64> = HashMap::new();
-    let mut queue = BinaryHeap::new();
-    best.insert(task.initial_state.clone(), 0);
-    queue.push(Reverse((0u64, task.initial_state.clone())));
-    while let Some(Reverse((g, s))) = queue.pop() {
-        if best.get(&s).is_some_and(|&b| b < g) {
-            continue;
-        }
-        if task.is_goal(&s) {
-            return Some(g);
-        }
-        for op in &task.operators {
-            if task.is_applicable(op, &s) {
-                let mut t = s.clone();
-                for e in &op.effects {
-                    t[e.var.index()] = e.value;
-                }
-                let ng = g + task.cost(op);
-                if best.get(&t).is_none_or(|&b| ng < b) {
-                    best.insert(t.clone(), ng);
-                    queue.push(Reverse((ng, t)));
-                }
-            }
-        }
-    }
-    None
-}
 
 /// A partial assignment: per variable, maybe a value.
 fn facts(values: &[Option<u32>]) -> Vec<Fact> {

@@ -85,3 +85,31 @@ fn limits_that_are_not_reached_change_nothing() {
     assert_eq!(within.stats, free.stats);
     assert_eq!(free.stats.ground_actions, 243);
 }
+
+/// h²'s matrix of fact pairs is checked against the memory limit before it is allocated:
+/// without a probe translation counts no bytes of its own, so a limit of 8 bytes lets
+/// translation finish and stops h² (its rows take a word at least).
+#[test]
+fn h2_stops_at_the_memory_limit_its_pairs_would_exceed() {
+    let (domain, problem) = blow_up(3);
+    let options = translate::TranslateOptions {
+        h2_mutexes: true,
+        ..Default::default()
+    };
+    let small = Limits {
+        memory_limit_bytes: Some(8),
+        ..Limits::default()
+    };
+    let translation = translate::translate_with_options(&domain, &problem, &small, &options);
+    assert_eq!(stopped(translation.unwrap()), Some(Limit::Memory));
+    let plain = translate::translate_within(&domain, &problem, &small).unwrap();
+    assert!(
+        matches!(plain, Translation::Task(_)),
+        "only h² needs the bytes"
+    );
+    let free = translate::translate_with_options(&domain, &problem, &Limits::default(), &options);
+    let Translation::Task(t) = free.unwrap() else {
+        panic!("a task")
+    };
+    assert!(t.stats.h2.is_some());
+}

@@ -4,7 +4,8 @@
 //! equality, zero and non-zero costs) are solved twice by uniform-cost search: once on the
 //! PDDL semantics directly (every binding of every action over all objects, states as sets
 //! of ground atoms: the slow, obviously correct oracle) and once on the translated
-//! finite-domain task. Both must agree on solvability and on the optimal cost.
+//! finite-domain task. Both must agree on solvability and on the optimal cost, with the
+//! translator's options (h², dominated operators) off and on.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)] // tests fail loudly by design
 
@@ -302,36 +303,6 @@ fn oracle(domain: &pddl::Domain, problem: &pddl::Problem) -> Result<Option<u64>,
     Ok(None)
 }
 
-/// Uniform-cost search on the finite-domain task.
-fn search_sas(task: &task::Task) -> Option<u64> {
-    let mut best: HashMap<Vec<u32>, u64> = HashMap::new();
-    let mut queue = BinaryHeap::new();
-    best.insert(task.initial_state.clone(), 0);
-    queue.push(Reverse((0u64, task.initial_state.clone())));
-    while let Some(Reverse((g, s))) = queue.pop() {
-        if best.get(&s).is_some_and(|&b| b < g) {
-            continue;
-        }
-        if task.is_goal(&s) {
-            return Some(g);
-        }
-        for op in &task.operators {
-            if task.is_applicable(op, &s) {
-                let mut t = s.clone();
-                for e in &op.effects {
-                    t[e.var.index()] = e.value;
-                }
-                let ng = g + task.cost(op);
-                if best.get(&t).is_none_or(|&b| ng < b) {
-                    best.insert(t.clone(), ng);
-                    queue.push(Reverse((ng, t)));
-                }
-            }
-        }
-    }
-    None
-}
-
 proptest! {
     // Failures are saved to, and replayed first from, `tests/preserves_cost.proptest-regressions`
     // (proptest's default persistence; committed, so every run replays them).
@@ -346,13 +317,19 @@ proptest! {
         let Ok(expected) = oracle(&domain, &problem) else {
             return Err(TestCaseError::reject("too many states for the oracle"));
         };
-        let found = match translate::translate(&domain, &problem).map_err(|e| TestCaseError::fail(e.to_string()))? {
-            translate::Translation::Unsolvable { .. } => None,
-            translate::Translation::Task(t) => search_sas(&t.task),
-            translate::Translation::Stopped { limit, .. } => {
-                return Err(TestCaseError::fail(format!("{limit} without limits")))
-            }
-        };
-        prop_assert_eq!(found, expected, "{}\n{}", d, p);
+        // Fast Downward's translation, with h², and with h² and dominated operators.
+        let h2 = translate::TranslateOptions { h2_mutexes: true, ..Default::default() };
+        let both = translate::TranslateOptions { remove_dominated_operators: true, ..h2 };
+        for options in [translate::TranslateOptions::default(), h2, both] {
+            let translation = translate::translate_with_options(&domain, &problem, &task::Limits::default(), &options);
+            let found = match translation.map_err(|e| TestCaseError::fail(e.to_string()))? {
+                translate::Translation::Unsolvable { .. } => None,
+                translate::Translation::Task(t) => task::testing::optimal_cost(&t.task),
+                translate::Translation::Stopped { limit, .. } => {
+                    return Err(TestCaseError::fail(format!("{limit} without limits")))
+                }
+            };
+            prop_assert_eq!(found, expected, "{:?}\n{}\n{}", options, d, p);
+        }
     }
 }

@@ -89,7 +89,7 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             let input = slim::PlanInput::Pddl {
                 domain: &parsed.domain,
                 problem: &parsed.problem,
-                options: Default::default(),
+                options: args.translator,
             };
             let logged = slim::plan_logged(input, &config, &limits, start, &mut log);
             (

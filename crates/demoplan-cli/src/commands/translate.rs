@@ -33,19 +33,19 @@ pub fn run(args: TranslateArgs) -> Result<ExitCode, Failure> {
     let start = Instant::now();
     let (domain, problem) = domain_and_problem(&args.files)?;
     let parsed = read_parsed(&domain, &problem)?;
-    let translation = translate::translate(&parsed.domain, &parsed.problem).map_err(|e| {
-        Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
-    })?;
+    let (d, p, limits) = (&parsed.domain, &parsed.problem, task::Limits::default());
+    let translation =
+        translate::translate_with_options(d, p, &limits, &args.translator).map_err(|e| {
+            Failure::plain(ExitCode::INPUT_ERROR, format!("{}: {e}", problem.display()))
+        })?;
     print!("{}", translation.log());
     println!(
         "Translation done! [{:.3}s wall-clock]",
         start.elapsed().as_secs_f64()
     );
-    let (task, code) = match translation {
-        translate::Translation::Task(t) => (t.task, ExitCode::SUCCESS),
-        translate::Translation::Unsolvable { .. } => {
-            (translate::unsolvable_task(), ExitCode::UNSOLVABLE)
-        }
+    let code = match translation {
+        translate::Translation::Task(_) => ExitCode::SUCCESS,
+        translate::Translation::Unsolvable { .. } => ExitCode::UNSOLVABLE,
         // Without limits nothing stops translation; were it stopped, nothing is written.
         translate::Translation::Stopped { limit, .. } => {
             return Err(Failure::plain(
@@ -55,7 +55,7 @@ pub fn run(args: TranslateArgs) -> Result<ExitCode, Failure> {
         }
     };
     let sas_file = &args.sas_file;
-    output::write_atomically(sas_file, &task::sas_file::write(&task))?;
+    output::write_atomically(sas_file, &translation.sas_file().unwrap_or_default())?;
     println!("Wrote {}", sas_file.display());
     Ok(code)
 }

@@ -52,6 +52,33 @@ fn translated_with_optimum(domain: &str, instance: &str) -> (Task, u64) {
     (task, optimum)
 }
 
+/// A* with `config`'s heuristic on `task` reaches `optimum`, from an initial estimate
+/// of at most the optimum, with a plan that reaches the goal. Returns the heuristic (for
+/// its statistics) and that initial estimate.
+fn solve_optimally(
+    task: &Task,
+    config: &str,
+    optimum: u64,
+    instance: &str,
+) -> (Box<dyn Heuristic>, u64) {
+    let parsed = parse_search(config).unwrap();
+    let mut h = parsed
+        .heuristic
+        .build_with_limits(task, &SearchLimits::default())
+        .unwrap()
+        .into_heuristic()
+        .unwrap();
+    let result = astar(task, &mut h, &SearchLimits::default(), None).unwrap();
+    let Outcome::Solved(plan) = result.outcome else {
+        panic!("{instance} {config}: {:?}", result.outcome)
+    };
+    assert_eq!(plan.cost, optimum, "{instance} {config}");
+    let h0 = result.statistics.initial_h.unwrap();
+    assert!(h0 <= optimum, "{instance} {config}: h = {h0}");
+    assert!(task.is_goal(&search::replay(task, &plan.operators).unwrap()));
+    (h, h0)
+}
+
 /// States on random walks from the initial state (a fixed-seed generator: reproducible).
 fn sample_states(task: &Task, walks: usize, length: usize) -> Vec<Vec<u32>> {
     let mut seed = 0x9e37_79b9_7f4a_7c15u64;
@@ -121,23 +148,9 @@ fn pattern_databases_reach_the_optimum_on_benchmark_instances() {
             &configs[..]
         };
         for config in configs {
-            let config = parse_search(config).unwrap();
-            let mut h = config
-                .heuristic
-                .build_with_limits(&task, &SearchLimits::default())
-                .unwrap()
-                .into_heuristic()
-                .unwrap();
+            let (h, _) = solve_optimally(&task, config, optimum, &format!("{domain}/{instance}"));
             let statistics = h.pdb_statistics().unwrap().clone();
             assert!(statistics.patterns > 0 || task.goal.is_empty());
-            let result = astar(&task, &mut h, &SearchLimits::default(), None).unwrap();
-            let Outcome::Solved(plan) = result.outcome else {
-                panic!("{domain}/{instance} {config}: {:?}", result.outcome)
-            };
-            assert_eq!(plan.cost, optimum, "{domain}/{instance} {config}");
-            let h0 = result.statistics.initial_h.unwrap();
-            assert!(h0 <= optimum, "{domain}/{instance} {config}: h = {h0}");
-            assert!(task.is_goal(&search::replay(&task, &plan.operators).unwrap()));
         }
     }
 }
@@ -155,13 +168,6 @@ fn saturated_cost_partitioning_reaches_the_optimum_on_benchmark_instances() {
     for &(domain, instance) in &SMALL_INSTANCES {
         let (task, optimum) = translated_with_optimum(domain, instance);
         for config in configs {
-            let config = parse_search(config).unwrap();
-            let mut h = config
-                .heuristic
-                .build_with_limits(&task, &SearchLimits::default())
-                .unwrap()
-                .into_heuristic()
-                .unwrap();
             let goal_vars: Vec<u32> = task.goal.iter().map(|f| f.var.0).collect();
             let single = goal_vars
                 .iter()
@@ -172,18 +178,11 @@ fn saturated_cost_partitioning_reaches_the_optimum_on_benchmark_instances() {
                 })
                 .max()
                 .unwrap_or(0);
-            let result = astar(&task, &mut h, &SearchLimits::default(), None).unwrap();
-            let Outcome::Solved(plan) = result.outcome else {
-                panic!("{domain}/{instance} {config}: {:?}", result.outcome)
-            };
-            assert_eq!(plan.cost, optimum, "{domain}/{instance} {config}");
-            let h0 = result.statistics.initial_h.unwrap();
-            assert!(h0 <= optimum, "{domain}/{instance} {config}: h = {h0}");
+            let (_, h0) = solve_optimally(&task, config, optimum, &format!("{domain}/{instance}"));
             assert!(
                 h0 >= single,
                 "{domain}/{instance} {config}: h = {h0} < {single}"
             );
-            assert!(task.is_goal(&search::replay(&task, &plan.operators).unwrap()));
         }
     }
 }

@@ -108,11 +108,12 @@ fn no_library_crate_touches_the_terminal_or_depends_on_the_cli() {
 }
 
 /// The line count of the CLI's sources, a budget: a command that grows past it is
-/// computing something that belongs in a library crate. The budget is 2,830 today: 2,943
+/// computing something that belongs in a library crate. The budget is 2,835 today: 2,943
 /// lines before issue 21's fifth cut (import's write loop, domain's choice, `--alias`,
 /// solve's backend, simulate's listing) and issue 24's grid glue moving to
 /// `experiment::grid::relaunch`, 2,820 after, then 6 more for the `scp` heuristics in
-/// `plan --help` and the translator options (`--h2-mutexes`, `--remove-dominated-operators`);
+/// `plan --help` and the translator options (`--h2-mutexes`, `--remove-dominated-operators`),
+/// and 7 for refusing those options on a translated task;
 /// issue 21 aimed at 2,500. What is left: the option declarations and their help texts
 /// (`cli.rs`, their wording pinned by the `--help` snapshots), diagnostics
 /// (`diagnostic.rs`, `recording_input.rs`, `demo_input.rs`: library errors rendered with
@@ -138,5 +139,5 @@ fn the_cli_stays_a_thin_shell() {
             .sum()
     }
     let total = lines(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src"));
-    assert!(total <= 2_830, "crates/demoplan-cli/src has {total} lines");
+    assert!(total <= 2_835, "crates/demoplan-cli/src has {total} lines");
 }

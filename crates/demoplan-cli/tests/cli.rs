@@ -388,6 +388,27 @@ fn plan_reads_fast_downwards_output_sas() {
     );
 }
 
+/// The translator's options change a translation; on a translated task (`output.sas`)
+/// there is none, so asking for them is a mistake on the command line (exit 36), never
+/// silently ignored.
+#[test]
+fn translator_options_on_output_sas_are_a_usage_error() {
+    let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
+    let tmp = tempdir("sas-translator-options");
+    for option in ["--h2-mutexes", "--remove-dominated-operators"] {
+        exits_saying(
+            36,
+            "the translator options act on PDDL, not on a translated task",
+            demoplan().current_dir(&tmp).arg("plan").arg(&sas).args([
+                option,
+                "--search",
+                "astar(blind())",
+            ]),
+        );
+        assert!(!tmp.join("sas_plan").exists());
+    }
+}
+
 /// Issue 8: `plan` reports what building a pattern-database heuristic did (the hill
 /// climbing of `ipdb()`) before the search, in Fast Downward's words, so that the
 /// benchmark script can split the time between climb and search.

@@ -73,6 +73,13 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let mut log = |line: &str| println!("{line}");
     let (logged, problem_path, pddl_files) = match args.files.as_slice() {
         [single] if is_sas_file(single) => {
+            if args.translator != translate::TranslateOptions::default() {
+                let what = "the translator options act on PDDL, not on a translated task";
+                return Err(Failure::plain(
+                    ExitCode::USAGE,
+                    format!("{}: {what}", single.display()),
+                ));
+            }
             let task = read_sas(single)?;
             let logged = slim::plan_logged(
                 slim::PlanInput::Task(&task),

@@ -430,6 +430,33 @@ fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
     assert!(climb < built && built < search, "{log}");
 }
 
+/// Saturated cost partitioning reports what its construction did before the search
+/// (projections, orders, the construction time that bench/compare-fd reads as the
+/// heuristic's time), and the counts are those of a real construction.
+#[test]
+fn plan_reports_the_construction_of_scp_before_the_search() {
+    let (_, out) = plan_fast_downwards_task(
+        "scp-statistics",
+        "astar(scp([projections(systematic(2))], max_orders=3))",
+    );
+    let log = stdout_text(&out);
+    assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
+    assert!(
+        logged_number(&log, "Number of abstractions: ").is_some_and(|n| n > 0),
+        "{log}"
+    );
+    assert!(
+        logged_number(&log, "Orders stored: ").is_some_and(|n| (1..=3).contains(&n)),
+        "{log}"
+    );
+    let at = |line: &str| {
+        log.find(line)
+            .unwrap_or_else(|| panic!("no {line:?} in\n{log}"))
+    };
+    let built = at("\nSaturated cost partitioning heuristic computation time: ");
+    assert!(built < at("\nSearch time: "), "{log}");
+}
+
 #[test]
 fn translate_writes_output_sas_that_plan_reads_back() {
     let tmp = tempdir("translate");

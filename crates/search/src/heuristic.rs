@@ -27,6 +27,13 @@ pub trait Heuristic {
     fn pdb_statistics(&self) -> Option<&PdbStatistics> {
         None
     }
+
+    /// What building the heuristic did, as log lines in Fast Downward's (or Scorpion's)
+    /// words, one per line without a final newline; printed before the search. `None`
+    /// for heuristics that build nothing worth reporting.
+    fn construction_log(&self) -> Option<String> {
+        self.pdb_statistics().map(ToString::to_string)
+    }
 }
 
 impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
@@ -40,6 +47,10 @@ impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
 
     fn pdb_statistics(&self) -> Option<&PdbStatistics> {
         (**self).pdb_statistics()
+    }
+
+    fn construction_log(&self) -> Option<String> {
+        (**self).construction_log()
     }
 }
 

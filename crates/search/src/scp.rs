@@ -556,6 +556,30 @@ pub struct ScpStatistics {
     pub total_time: Duration,
 }
 
+impl std::fmt::Display for ScpStatistics {
+    /// Log lines after Scorpion's (`Number of abstractions: 12`, ...), one per line,
+    /// without a final newline; the last gives the whole construction time, as
+    /// `Canonical PDB heuristic computation time` does for pattern databases.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(f, "Number of abstractions: {}", self.projections)?;
+        writeln!(f, "Abstract states: {}", self.total_size)?;
+        writeln!(f, "Abstract transitions: {}", self.total_transitions)?;
+        writeln!(f, "Sys-SCP patterns: {}", self.sys_scp_patterns)?;
+        writeln!(f, "Orders computed: {}", self.orders_computed)?;
+        writeln!(f, "Orders stored: {}", self.orders)?;
+        writeln!(
+            f,
+            "Time for building abstractions: {:.6}s",
+            self.abstraction_time.as_secs_f64()
+        )?;
+        write!(
+            f,
+            "Saturated cost partitioning heuristic computation time: {:.6}s",
+            self.total_time.as_secs_f64()
+        )
+    }
+}
+
 /// Saturated cost partitioning over projections, maximised over orders; see the module
 /// documentation. Admissible (not always consistent: online orders change estimates).
 #[derive(Debug, Clone)]
@@ -1001,6 +1025,10 @@ impl Heuristic for Scp {
             }
         }
         Some(best)
+    }
+
+    fn construction_log(&self) -> Option<String> {
+        Some(self.statistics.to_string())
     }
 }
 

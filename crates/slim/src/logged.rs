@@ -133,8 +133,8 @@ fn plan_logged_with(
             return Ok(stopped_before_search(limit, translate_time, start, log))
         }
     };
-    if let Some(s) = heuristic.pdb_statistics() {
-        log(&s.to_string());
+    if let Some(lines) = heuristic.construction_log() {
+        log(&lines);
     }
     let heuristic_time = start.elapsed();
     let mut pruning = config.pruning.build(task);

@@ -26,9 +26,9 @@
 //! incremental: only operators of the cut got cheaper, so only facts they reach can get
 //! cheaper, and a decrease-only Dijkstra from their effects updates h^max and supporters.
 //!
-//! Cost per evaluation: O(rounds * (facts + preconditions + effects)), with a radix heap
-//! over integer costs, round counters instead of clearing arrays, and no allocation once
-//! the scratch buffers have grown.
+//! Cost per evaluation: O(rounds * (facts + preconditions + effects)), with a queue of a
+//! bucket per small cost and a radix heap above (`radix_heap.rs`), round counters instead
+//! of clearing arrays, and no allocation once the scratch buffers have grown.
 
 use task::{Task, TaskError};
 
@@ -85,13 +85,12 @@ struct RelaxedOp {
     /// Effects: `eff[eff_start..eff_end]`.
     eff_start: u32,
     eff_end: u32,
-    /// The round in which it was last put in a cut.
-    in_cut: u32,
     /// The last round in whose goal zone one of its effects lies (marked while the zone is
     /// marked, so the cut search tests one field instead of every effect).
     enters_zone: u32,
-    /// The round in which its supporter was last updated, and (for the tests' rule) its
+    /// For the tests' rule: the round in which its supporter was last updated, and its
     /// supporter when that round's update began.
+    #[cfg(test)]
     updated_in_round: u32,
     #[cfg(test)]
     round_supporter: u32,
@@ -251,15 +250,17 @@ fn update_operator(
     round: u32,
     o: u32,
 ) {
-    let op = &mut ops[o as usize];
-    if op.updated_in_round != round {
-        op.updated_in_round = round;
-        #[cfg(test)]
-        {
+    #[cfg(not(test))]
+    let _ = round;
+    #[cfg(test)]
+    {
+        let op = &mut ops[o as usize];
+        if op.updated_in_round != round {
+            op.updated_in_round = round;
             op.round_supporter = op.supporter;
         }
     }
-    let op = *op;
+    let op = ops[o as usize];
     let pres = &pre[op.pre_start as usize..(op.pre_start + op.num_pre) as usize];
     let Some(max) = pres.iter().map(|&p| facts[p as usize].cost).max() else {
         return;
@@ -548,7 +549,7 @@ impl LmCut {
     /// reloads their addresses and lengths from memory at every step.
     fn find_cut(&mut self, state: &[u32]) {
         let round = self.round;
-        let ops = &mut self.ops[..];
+        let ops = &self.ops[..];
         let facts = &mut self.facts[..];
         let eff = &self.eff[..];
         let stack = &mut self.stack[..];
@@ -570,15 +571,13 @@ impl LmCut {
             let mut next = facts[f as usize].supported;
             while next != NONE {
                 let o = next;
-                let op = &mut ops[o as usize];
+                let op = &ops[o as usize];
                 next = op.supported_next;
                 if op.enters_zone == round {
-                    // A cut operator; its other effects lie beyond the cut.
-                    if op.in_cut != round {
-                        op.in_cut = round;
-                        cut[cut_len] = o;
-                        cut_len += 1;
-                    }
+                    // A cut operator; its other effects lie beyond the cut. It is met
+                    // once: only through its supporter, which is pushed once.
+                    cut[cut_len] = o;
+                    cut_len += 1;
                     continue;
                 }
                 for &e in &eff[op.eff_start as usize..op.eff_end as usize] {
@@ -602,9 +601,11 @@ impl LmCut {
                 f.reached = 0;
             }
             for op in &mut self.ops {
-                op.in_cut = 0;
                 op.enters_zone = 0;
-                op.updated_in_round = 0;
+                #[cfg(test)]
+                {
+                    op.updated_in_round = 0;
+                }
             }
             self.round = 0;
         }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A stand-in for Fast Downward's (or SymK's) fast-downward.py in bench/compare-fd's test:
 the same command line (`--overall-time-limit T [--overall-memory-limit M] DOMAIN PROBLEM
---search S`), a plan file `sas_plan` in the working directory and log lines in Fast
+--search S`, or `--alias NAME` before the files), a plan file `sas_plan` in the working directory and log lines in Fast
 Downward's words. It knows the plans of the test's instances by problem file name:
 
 - `reach-c.pddl`: solved, the optimal plan (cost 2);
@@ -21,13 +21,22 @@ from pathlib import Path
 ap = argparse.ArgumentParser()
 ap.add_argument("--overall-time-limit")
 ap.add_argument("--overall-memory-limit")
+ap.add_argument("--alias")
 ap.add_argument("domain")
 ap.add_argument("problem")
-ap.add_argument("--search", required=True)
+ap.add_argument("--search")
 args = ap.parse_args()
+if (args.alias is None) == (args.search is None):
+    ap.error("give --search or --alias")  # exit 2, as the driver's argparse
+if args.alias and sys.argv.index("--alias") > sys.argv.index(args.domain):
+    # The real driver takes the files' later options as the search component's.
+    ap.error("--alias is a driver option: it goes before the input files")
 
 print(f"INFO     planner time limit: {args.overall_time_limit}")
-print(f"INFO     search configuration: {args.search}")
+if args.alias:
+    print(f"INFO     alias: {args.alias}")
+else:
+    print(f"INFO     search configuration: {args.search}")
 name = Path(args.problem).name
 if name == "reach-c.pddl":
     plan = ["(move a b)", "(move b c)"]

@@ -133,6 +133,17 @@ class CompareFdGrid(unittest.TestCase):
         runs = (self.out / "runs.csv").read_text().splitlines()
         self.assertEqual(len(runs), 7)
 
+    def test_an_alias_is_the_planners_alias_option(self):
+        done = self.grid("--planners", "demoplan,fd", "--search", "alias:seq-opt-lmcut")
+        self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+        by_name = {(p["algorithm"], p["problem"]): p for p in self.properties().values()}
+        ours = by_name[("demoplan-alias:seq-opt-lmcut", "reach-d")]
+        self.assertEqual((ours["coverage"], ours["cost"], ours["cost_check"]), (1, 3, "ok"), ours)
+        peer = by_name[("fd-alias:seq-opt-lmcut", "reach-c")]
+        self.assertEqual((peer["coverage"], peer["cost"], peer["plan_valid"]), (1, 2, "yes"), peer)
+        log = (self.out / peer["run_dir"] / "run.log").read_text()
+        self.assertIn("alias: seq-opt-lmcut", log)
+
     def test_finished_cells_are_reused_unless_forced(self):
         first = self.grid()
         self.assertEqual(first.returncode, 0, first.stderr)
@@ -173,6 +184,14 @@ class CompareFdGrid(unittest.TestCase):
         self.assertEqual(done.returncode, 0, done.stderr)
         self.assertIn("1 reused", done.stderr)
         self.assertEqual(len(self.properties()), 2)
+
+    def test_the_watchdog_kills_a_peer_past_its_wall_time(self):
+        mark = Path(self.tmp.name) / "peer-running"
+        done = self.grid("--planners", "fd", "--watchdog", "2", env={"FAKE_PEER_HANG": str(mark)})
+        self.assertEqual(done.returncode, 0, done.stdout + done.stderr)
+        hung = {p["problem"]: p for p in self.properties().values()}["reach-d"]
+        self.assertEqual((hung["coverage"], hung["error"]), (0, "sigkill"), hung)
+        self.assertIn("killed by the watchdog after 2 s wall", hung["unexplained_errors"][0])
 
     def test_a_wrong_plan_of_a_peer_fails_the_grid(self):
         done = self.grid(env={"FAKE_PEER_WRONG": "1"})

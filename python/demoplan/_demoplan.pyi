@@ -10,9 +10,12 @@ def plan(
     domain_name: str,
     problem: str,
     problem_name: str,
-    search: str,
+    search: Optional[str],
+    alias: Optional[str] = None,
     time_limit: Optional[float] = None,
     memory_limit: Optional[int] = None,
+    h2_mutexes: bool = False,
+    remove_dominated_operators: bool = False,
 ) -> Tuple[str, Optional[str], Optional[int], str]: ...
 def validate(
     domain: str,

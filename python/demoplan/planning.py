@@ -62,29 +62,52 @@ def _read(source: Source, what: str) -> Tuple[str, str]:
 def plan(
     domain: Source,
     problem: Source,
-    search: str = "astar(lmcut())",
+    search: Optional[str] = None,
     time_limit: Optional[float] = None,
     memory_limit: Optional[int] = None,
+    alias: Optional[str] = None,
+    *,
+    h2_mutexes: bool = False,
+    remove_dominated_operators: bool = False,
 ) -> Plan:
     """Plans ``problem`` in ``domain`` with demoplan's planner, in this process.
 
     ``domain`` and ``problem`` are PDDL texts or paths. ``search`` is a search string as
-    ``demoplan plan --search`` takes it. ``time_limit`` (seconds) covers translation,
+    ``demoplan plan --search`` takes it, or ``alias`` names a configuration as ``demoplan
+    plan --alias`` does (``"demoplan-opt"``: its search and its translator options); not
+    both. With neither, ``astar(lmcut())``. ``time_limit`` (seconds) covers translation,
     heuristic construction and search; ``memory_limit`` (bytes) is on the Rust heap the
     run allocates, on top of what the process held at its start (the counting
     allocator reads Rust allocations only, not Python objects).
+
+    ``h2_mutexes`` and ``remove_dominated_operators`` are the translator options of
+    ``demoplan plan --h2-mutexes --remove-dominated-operators``: h² removes what it
+    proves unreachable, the second removes every operator another dominates; both keep
+    the optimal cost. Off by default, so the translation is Fast Downward's; beside an
+    alias they are switched on in addition to the alias's own. What they removed is in
+    the statistics (``statistics["translator"]``).
 
     The GIL is released while planning. Ctrl-C stops the run through its cancel flag
     and raises KeyboardInterrupt.
 
     Raises :class:`~demoplan.InputError` (bad PDDL or search string, with the
-    diagnostic), :class:`~demoplan.Unsupported`, :class:`~demoplan.Unsolvable`,
+    diagnostic; an unknown alias, or both a search and an alias, with exit code 36),
+    :class:`~demoplan.Unsupported`, :class:`~demoplan.Unsolvable`,
     :class:`~demoplan.TimeLimit` or :class:`~demoplan.MemoryLimit`.
     """
     domain_text, domain_name = _read(domain, "domain")
     problem_text, problem_name = _read(problem, "problem")
     outcome, plan_text, cost, statistics = _demoplan.plan(
-        domain_text, domain_name, problem_text, problem_name, search, time_limit, memory_limit
+        domain_text,
+        domain_name,
+        problem_text,
+        problem_name,
+        search,
+        alias,
+        time_limit,
+        memory_limit,
+        h2_mutexes,
+        remove_dominated_operators,
     )
     stats: Dict[str, Any] = json.loads(statistics)
     if outcome == "solved" and plan_text is not None and cost is not None:

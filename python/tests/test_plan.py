@@ -63,6 +63,25 @@ def test_plan_from_texts() -> None:
     assert found.cost == 8
 
 
+def test_alias_runs_its_search_and_translator_options(cube_domain: pathlib.Path, cube_problem: pathlib.Path) -> None:
+    found = demoplan.plan(cube_domain, cube_problem, alias="demoplan-opt")
+    assert found.cost == 6
+    translator = found.statistics["translator"]
+    assert translator["h2_mutexes"] and translator["remove_dominated_operators"]
+    assert demoplan.validate(cube_domain, cube_problem, found).valid
+    # Without an alias the translation is Fast Downward's.
+    plain = demoplan.plan(cube_domain, cube_problem)
+    assert plain.statistics["translator"]["h2_mutexes"] is False
+
+
+def test_unknown_alias_or_alias_and_search_is_an_input_error(cube_domain: pathlib.Path, cube_problem: pathlib.Path) -> None:
+    with pytest.raises(demoplan.InputError, match="known aliases: seq-opt-lmcut, demoplan-opt") as caught:
+        demoplan.plan(cube_domain, cube_problem, alias="seq-opt-nothing")
+    assert caught.value.exit_code == 36
+    with pytest.raises(demoplan.InputError, match="not both"):
+        demoplan.plan(cube_domain, cube_problem, search="astar(blind())", alias="demoplan-opt")
+
+
 def test_bad_pddl_raises_input_error_with_the_diagnostic(cube_domain: pathlib.Path) -> None:
     broken = "(define (problem p) (:domain cube-stacking)\n  (:objects c1 - cube)\n  (:init (on-top c9 c1))\n  (:goal (clear c1)))\n"
     with pytest.raises(demoplan.InputError) as caught:
@@ -97,6 +116,37 @@ def test_unsolvable_raises_unsolvable() -> None:
     problem = reverse_tower(3).replace("(:goal (and", "(:goal (and (on b0 b1) (on b1 b0)")
     with pytest.raises(demoplan.Unsolvable):
         demoplan.plan(BLOCKS_DOMAIN, problem)
+
+
+# h² proves `both` never applies (`p` is gone for good once `q` holds), which relaxed
+# reachability does not see; `one-dear` is `one` at a higher cost, dominated by it.
+H2_DOMAIN = """
+(define (domain h) (:requirements :strips :negative-preconditions :action-costs)
+  (:predicates (p) (q) (g)) (:functions (total-cost) - number)
+  (:action drop-p :parameters () :precondition (p) :effect (and (not (p)) (increase (total-cost) 1)))
+  (:action make-q :parameters () :precondition (not (p)) :effect (and (q) (increase (total-cost) 1)))
+  (:action both :parameters () :precondition (and (p) (q)) :effect (and (g) (increase (total-cost) 1)))
+  (:action one :parameters () :precondition (q) :effect (and (g) (increase (total-cost) 5)))
+  (:action one-dear :parameters () :precondition (q) :effect (and (g) (increase (total-cost) 6))))
+"""
+H2_PROBLEM = "(define (problem h1) (:domain h) (:init (p) (= (total-cost) 0)) (:goal (g)) (:metric minimize (total-cost)))"
+
+
+def test_plan_takes_the_translator_options_of_the_command_line() -> None:
+    plain = demoplan.plan(H2_DOMAIN, H2_PROBLEM, search="astar(blind())")
+    off = plain.statistics["translator"]
+    assert off["h2_mutexes"] is False and off["remove_dominated_operators"] is False
+    assert off["h2_operators_removed"] is None and off["dominated_operators_removed"] is None
+    pruned = demoplan.plan(
+        H2_DOMAIN, H2_PROBLEM, search="astar(blind())", h2_mutexes=True, remove_dominated_operators=True
+    )
+    on = pruned.statistics["translator"]
+    assert on["h2_mutexes"] is True and on["remove_dominated_operators"] is True
+    assert on["h2_operators_removed"] == 1, on
+    assert on["dominated_operators_removed"] == 1, on
+    # Both keep the optimal cost: drop-p, make-q, one.
+    assert plain.cost == pruned.cost == 7
+    assert pruned.steps == ["(drop-p)", "(make-q)", "(one)"]
 
 
 def test_plan_honours_its_time_limit() -> None:

@@ -43,7 +43,7 @@ fn library(seed: u64) -> Library {
 
 #[test]
 fn every_seed_plans_every_paper_goal_and_every_plan_executes() {
-    let backend = slim::Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap());
+    let backend = slim::Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap().into());
     let mut planned = 0;
     for seed in SEEDS {
         let library = library(seed);

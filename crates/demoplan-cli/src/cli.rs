@@ -2,7 +2,8 @@
 
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{Args, Parser, Subcommand};
+use experiment::grid::{FastDownwardArgs, GridArgs, RunLimitArgs, SlurmArgs};
 
 /// demoplan: planning domains from human demonstrations, and a fast optimal planner.
 #[derive(Debug, Parser)]
@@ -180,7 +181,9 @@ pub struct PlanArgs {
     /// `scp([projections(sys_scp())], orders=greedy_orders())` or `scp_online([...], interval=N)`.
     #[arg(long, value_name = "SEARCH", required_unless_present = "alias")]
     pub search: Option<String>,
-    /// A named configuration, e.g. `seq-opt-lmcut`.
+    /// A named configuration: `seq-opt-lmcut` (`astar(lmcut())`), `demoplan-opt` (demoplan's
+    /// optimal configuration; it switches both translator options on, and options given
+    /// besides are switched on in addition).
     #[arg(long, value_name = "NAME", conflicts_with = "search")]
     pub alias: Option<String>,
     /// Where to write the plan.
@@ -381,7 +384,7 @@ pub struct LearnArgs {
     /// hand opens); `runs` keeps that Idle an activity of its own. See
     /// docs/operators.md.
     #[arg(long, value_name = "KIND", value_enum)]
-    pub activities: Option<ActivitiesArg>,
+    pub activities: Option<learn::Grouping>,
     #[command(flatten)]
     pub segmentation: SegmentationArgs,
     /// How long to wait while another learner writes the same library (its lock,
@@ -469,10 +472,13 @@ pub struct SolveArgs {
     /// The search, in Fast Downward's syntax.
     #[arg(long, value_name = "SEARCH", default_value = "astar(lmcut())")]
     pub search: String,
+    /// A named configuration of demoplan's planner instead: seq-opt-lmcut, demoplan-opt.
+    #[arg(long, value_name = "NAME", conflicts_with = "search")]
+    pub alias: Option<String>,
     #[command(flatten)]
     pub limits: RunLimitArgs,
     /// Who plans: demoplan or fast-downward.
-    #[arg(long, value_name = "PLANNER", default_value = "demoplan", value_parser = planner_names())]
+    #[arg(long, value_name = "PLANNER", default_value = "demoplan", value_enum)]
     pub planner: slim::PlannerName,
     /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
     #[arg(long, value_name = "PATH")]
@@ -503,123 +509,6 @@ pub struct ExecuteArgs {
     /// Write the frames of the execution as a recording (JSON Lines).
     #[arg(long, value_name = "FILE.jsonl")]
     pub frames: Option<PathBuf>,
-}
-
-/// `solve --planner`: the values are [`slim::PlannerName`]'s names, listed in the help
-/// and checked by clap. (`slim` has no clap, and the orphan rule keeps `ValueEnum` off a
-/// type of another crate, so its names are the possible values.)
-fn planner_names() -> impl clap::builder::TypedValueParser<Value = slim::PlannerName> {
-    use clap::builder::TypedValueParser as _;
-    let names = slim::PlannerName::ALL.map(slim::PlannerName::name);
-    clap::builder::PossibleValuesParser::new(names).try_map(|name| {
-        slim::PlannerName::from_name(&name).ok_or_else(|| format!("unknown planner `{name}`"))
-    })
-}
-
-/// `learn --activities`: how segments become activities ([`learn::Grouping`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ActivitiesArg {
-    /// An activity ends where the Idle right after it ends.
-    Settled,
-    /// Runs of one class; the Idle after an activity is an activity of its own.
-    Runs,
-}
-
-impl ActivitiesArg {
-    /// The grouping it names.
-    pub fn grouping(self) -> learn::Grouping {
-        match self {
-            ActivitiesArg::Settled => learn::Grouping::Settled,
-            ActivitiesArg::Runs => learn::Grouping::Runs,
-        }
-    }
-}
-
-/// The limits of each planning run: a level of `solve`, a run of `reproduce` and
-/// `study`. The time limit's default is the command's (`mut_arg` on its `Args`).
-#[derive(Debug, Args)]
-pub struct RunLimitArgs {
-    /// Time limit per run, with Fast Downward's units (`60`, `60s`, `2m`).
-    #[arg(long, value_name = "TIME")]
-    pub time_limit: Option<String>,
-    /// Memory limit per run, on the heap the run allocates, in binary units (`512M`,
-    /// `2G`; bytes without a unit). `auto`: the memory available at the start, shared by
-    /// the runs going at once; `infinity`: none. A run that reaches it stops with the
-    /// outcome `memory`.
-    #[arg(
-        long,
-        value_name = "MEMORY",
-        default_value = "auto",
-        overrides_with = "memory_limit"
-    )]
-    pub memory_limit: String,
-}
-
-/// Fast Downward run beside demoplan (`reproduce`, `study`).
-#[derive(Debug, Args)]
-pub struct FastDownwardArgs {
-    /// Run the same grid with Fast Downward beside demoplan.
-    #[arg(long)]
-    pub with_fd: bool,
-    /// Fast Downward's fast-downward.py (else the DEMOPLAN_FD environment variable).
-    #[arg(long, value_name = "PATH", requires = "with_fd")]
-    pub fd: Option<PathBuf>,
-}
-
-/// A grid's options (`reproduce`, `study`; docs/grids.md).
-#[derive(Debug, Args)]
-pub struct GridArgs {
-    /// Cells at once, each a child process of its own (default: the number of cores).
-    #[arg(short = 'j', long = "jobs", value_name = "N", value_parser = clap::value_parser!(u32).range(1..=256))]
-    pub jobs: Option<u32>,
-    /// Compute only the cell with this id into its run folder under -o DIR, and print
-    /// its record as one JSON line (what each child process does).
-    #[arg(long, value_name = "ID")]
-    pub cell: Option<String>,
-    /// Compute every cell again, even those with a result in -o DIR.
-    #[arg(long)]
-    pub force: bool,
-    /// Print the cells (task, id, Lab's names, conditions) and run nothing.
-    #[arg(long)]
-    pub list_cells: bool,
-}
-
-/// The grid as Slurm jobs (`reproduce`, `study`; docs/grids.md).
-#[derive(Debug, Args)]
-pub struct SlurmArgs {
-    /// Write the grid as Slurm array jobs into DIR (scripts and logs; the results go to
-    /// -o DIR) and run nothing: `bash DIR/submit.sh` submits them.
-    #[arg(long, value_name = "DIR")]
-    pub slurm: Option<PathBuf>,
-    /// `sbatch --partition` (default: none, the cluster's default partition).
-    #[arg(long, value_name = "NAME", requires = "slurm")]
-    pub slurm_partition: Option<String>,
-    /// `sbatch --cpus-per-task`.
-    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
-    pub slurm_cpus_per_task: u32,
-    /// `sbatch --mem` (default: the memory limit plus 512M).
-    #[arg(long, value_name = "MEMORY", requires = "slurm", value_parser = experiment::grid::slurm::parse_mem)]
-    pub slurm_mem: Option<u64>,
-    /// `sbatch --time` of an array task (default: the time limit plus a margin, times
-    /// the cells per task).
-    #[arg(long, value_name = "TIME", requires = "slurm", value_parser = experiment::grid::slurm::parse_time)]
-    pub slurm_time: Option<std::time::Duration>,
-    /// Cells per array task (default: as few as keep the array within 1000 tasks).
-    #[arg(long, value_name = "N", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
-    pub slurm_cells_per_task: Option<u32>,
-    /// Array tasks running at once, at most (K of `--array=1-N%K`).
-    #[arg(long, value_name = "K", default_value_t = 100, requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
-    pub slurm_max_running: u32,
-    /// Seed of the shuffle that deals the cells to the array tasks.
-    #[arg(long, value_name = "N", default_value_t = 1, requires = "slurm")]
-    pub slurm_seed: u64,
-    /// A further `sbatch` option for every job, e.g. `--slurm-sbatch=--account=NAME`.
-    #[arg(long, value_name = "OPTION", requires = "slurm")]
-    pub slurm_sbatch: Vec<String>,
-    /// Compute nothing: build the report from the results in -o DIR (what the Slurm
-    /// collect job runs; cells without a result are an error naming them).
-    #[arg(long, hide = true)]
-    pub collect: bool,
 }
 
 /// The options of `reproduce`.
@@ -668,34 +557,8 @@ pub struct ReproduceArgs {
 #[derive(Debug, Args)]
 #[command(mut_arg("time_limit", |a| a.default_value("20")))]
 pub struct StudyArgs {
-    /// Seeds of the simulated studies: `1-20` (inclusive), `3`, or `1,4,9`.
-    #[arg(long, value_name = "RANGE", default_value = "1-20")]
-    pub seeds: String,
-    /// Simulated participants per study.
-    #[arg(long, value_name = "N", default_value_t = 3)]
-    pub participants: u32,
-    /// Demonstrations per participant.
-    #[arg(long, value_name = "N", default_value_t = 4)]
-    pub per_participant: u32,
-    /// Hands in the problems' scene, e.g. `1,2`.
-    #[arg(long, value_name = "LIST", default_value = "1,2")]
-    pub hands: String,
-    /// Cubes on the table beyond the towers', e.g. `0,2`.
-    #[arg(long, value_name = "LIST", default_value = "0")]
-    pub distractors: String,
-    /// Tower heights in cubes: `2-8` or a list.
-    #[arg(long, value_name = "RANGE", default_value = "2-8")]
-    pub heights: String,
-    /// Towers per goal, built from distinct cubes, e.g. `1,2`.
-    #[arg(long, value_name = "LIST", default_value = "1")]
-    pub towers: String,
-    /// How segments become activities: `settled`, `runs`, or both (`settled,runs`).
-    #[arg(long, value_name = "LIST", default_value = "settled")]
-    pub activities: String,
-    /// Also run every condition with operators that change nothing kept in the domains
-    /// (they are dropped by default).
-    #[arg(long)]
-    pub keep_without_effects: bool,
+    #[command(flatten)]
+    pub conditions: experiment::StudyConditionArgs,
     /// The simulator's parameters (JSON, as `demoplan simulate --params`).
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,

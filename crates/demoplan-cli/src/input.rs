@@ -43,26 +43,9 @@ pub fn sim_params(path: Option<&Path>) -> Result<simulate::SimParams, Failure> {
 }
 
 /// Finds the domain file of a problem by Fast Downward's naming rules
-/// ([`pddl::domain_file_candidates`]): the first candidate that is a file.
+/// ([`pddl::find_domain_file`]); none is a command line error (36).
 pub fn find_domain_file(problem: &Path) -> Result<PathBuf, Failure> {
-    let candidates = pddl::domain_file_candidates(problem);
-    if let Some(found) = candidates.iter().find(|p| p.is_file()) {
-        return Ok(found.clone());
-    }
-    let names: Vec<String> = candidates
-        .iter()
-        .filter_map(|c| c.file_name())
-        .map(|n| n.to_string_lossy().into_owned())
-        .collect();
-    Err(Failure::plain(
-        ExitCode::USAGE,
-        format!(
-            "could not find the domain file of {} using the naming rules (tried {}); name it \
-             on the command line",
-            problem.display(),
-            names.join(", ")
-        ),
-    ))
+    pddl::find_domain_file(problem, Path::is_file).map_err(|e| Failure::plain(ExitCode::USAGE, e))
 }
 
 /// A domain and problem read, parsed and checked against each other.

@@ -363,13 +363,12 @@ fn planning_is_deterministic() {
 fn plan_fast_downwards_task(test: &str, search: &str) -> (PathBuf, Output) {
     let sas = workspace().join("crates/task/tests/fixtures/cubes-tower-3.sas");
     let tmp = tempdir(test);
-    let out = succeeds(
-        demoplan()
-            .current_dir(&tmp)
-            .arg("plan")
-            .arg(&sas)
-            .args(["--search", search]),
-    );
+    let out = succeeds(demoplan().current_dir(&tmp).arg("plan").arg(&sas).args([
+        "--search",
+        search,
+        "--stats-json",
+        "stats.json",
+    ]));
     (tmp, out)
 }
 
@@ -432,10 +431,11 @@ fn plan_reports_the_hill_climbing_of_ipdb_before_the_search() {
 
 /// Saturated cost partitioning reports what its construction did before the search
 /// (projections, orders, the construction time that bench/compare-fd reads as the
-/// heuristic's time), and the counts are those of a real construction.
+/// heuristic's time), and the counts are those of a real construction; `--stats-json`
+/// has the same counts (issue 25).
 #[test]
 fn plan_reports_the_construction_of_scp_before_the_search() {
-    let (_, out) = plan_fast_downwards_task(
+    let (tmp, out) = plan_fast_downwards_task(
         "scp-statistics",
         "astar(scp([projections(systematic(2))], max_orders=3))",
     );
@@ -455,6 +455,21 @@ fn plan_reports_the_construction_of_scp_before_the_search() {
     };
     let built = at("\nSaturated cost partitioning heuristic computation time: ");
     assert!(built < at("\nSearch time: "), "{log}");
+    let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+    for (field, line) in [
+        ("abstractions", "Number of abstractions: "),
+        ("orders", "Orders stored: "),
+        ("orders_computed", "Orders computed: "),
+        ("abstract_states", "Abstract states: "),
+    ] {
+        let count = logged_number(&log, line).unwrap();
+        let field = format!("\"{field}\": {count},");
+        assert!(json.contains(&field), "{field} missing in {json}");
+    }
+    // Other heuristics have none.
+    let (tmp, _) = plan_fast_downwards_task("scp-statistics-none", "astar(lmcut())");
+    let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+    assert!(json.contains("\"scp\": null"), "{json}");
 }
 
 #[test]
@@ -481,6 +496,68 @@ fn translate_writes_output_sas_that_plan_reads_back() {
         "astar(hmax())",
     ]));
     assert_eq!(logged_number(&stdout_text(&out), "Plan cost: "), Some(6));
+}
+
+/// Issue 25 item 6: `--alias demoplan-opt` is a search and both translator options, on
+/// PDDL; options given besides only switch on; on a translated task its search runs and
+/// the log says the translator options were not applied.
+#[test]
+fn alias_demoplan_opt_switches_the_translator_options_on() {
+    let tmp = tempdir("alias-opt");
+    let tower = workspace().join("examples/cubes/tower-3.pddl");
+    for extra in [&[][..], &["--h2-mutexes"][..]] {
+        let out = succeeds(
+            demoplan()
+                .current_dir(&tmp)
+                .arg("plan")
+                .arg(&tower)
+                .args([
+                    "--alias",
+                    "demoplan-opt",
+                    "--stats-json",
+                    "stats.json",
+                    "--validate",
+                ])
+                .args(extra),
+        );
+        let log = stdout_text(&out);
+        for line in [
+            "Translator option h2_mutexes: true",
+            "Translator option remove_dominated_operators: true",
+            "pruning method: atom-centric stubborn sets",
+            "Plan cost: 6",
+        ] {
+            assert!(log.contains(line), "{line} missing in {log}");
+        }
+        let json = std::fs::read_to_string(tmp.join("stats.json")).unwrap();
+        assert!(
+            json.contains("\"remove_dominated_operators\": true"),
+            "{json}"
+        );
+    }
+    let out = succeeds(demoplan().current_dir(&tmp).arg("translate").arg(&tower));
+    assert!(stdout_text(&out).contains("Translator variables: 18"));
+    let out = succeeds(demoplan().current_dir(&tmp).args([
+        "plan",
+        "output.sas",
+        "--alias",
+        "demoplan-opt",
+    ]));
+    let log = stdout_text(&out);
+    assert!(
+        log.contains("Translator options of the alias not applied: the task is translated"),
+        "{log}"
+    );
+    assert_eq!(logged_number(&log, "Plan cost: "), Some(6));
+    let both = [
+        "plan",
+        "output.sas",
+        "--alias",
+        "demoplan-opt",
+        "--search",
+        "astar(blind())",
+    ];
+    exits(36, demoplan().current_dir(&tmp).args(both));
 }
 
 /// h² proves `both` never applies (`p` is gone for good once `q` holds), which neither
@@ -1640,6 +1717,31 @@ fn learn_operators_domain_problem_and_solve_work_together() {
     let log = stdout_text(&solve);
     assert_eq!(solve.status.code(), Some(0), "{}", transcript(&solve));
     assert!(log.contains("Solution found at priority 1 "), "{log}");
+    // The same with `--alias demoplan-opt` (issue 25 item 6); an alias is demoplan's own.
+    let alias = ["--alias", "demoplan-opt", "--time-limit", "60"];
+    let opt = succeeds(
+        demoplan()
+            .current_dir(&tmp)
+            .arg("solve")
+            .arg(&library)
+            .arg(&problem)
+            .args(alias),
+    );
+    assert!(stdout_text(&opt).contains("Solution found at priority 1 "));
+    let fd = [
+        "--planner",
+        "fast-downward",
+        "--fd",
+        "/nonexistent/fast-downward.py",
+    ];
+    let mut solve_fd = demoplan();
+    solve_fd
+        .arg("solve")
+        .arg(&library)
+        .arg(&problem)
+        .args(alias)
+        .args(fd);
+    exits_saying(36, "give Fast Downward a --search", &mut solve_fd);
     // With every Idle an activity of its own (`--activities runs`), the most frequent
     // operators cannot reach the tower: priority 1 is rejected before search and the
     // loop widens.

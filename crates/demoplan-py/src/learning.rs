@@ -139,15 +139,8 @@ impl PyLibrary {
     fn domain(&self, py: Python<'_>, prio: usize, keep_without_effects: bool) -> PyResult<String> {
         let choice = learn::DomainChoice::Priority(prio);
         let options = domain_options(keep_without_effects);
-        let Some((operators, what)) = learn::chosen_domain(&self.inner, choice, options) else {
-            return Err(failure_from(
-                py,
-                Failure::plain(
-                    ExitCode::INPUT_ERROR,
-                    "the library has no operator that changes anything; a domain would be empty",
-                ),
-            ));
-        };
+        let (operators, what) = learn::chosen_domain(&self.inner, choice, options)
+            .map_err(|e| failure_from(py, Failure::plain(ExitCode::INPUT_ERROR, e)))?;
         Ok(learn::domain_text(&self.inner, &operators, &what))
     }
 }
@@ -195,7 +188,7 @@ pub fn solve(
             &library.inner,
             domain_options(keep_without_effects),
             &parsed,
-            &slim::Backend::Demoplan(config),
+            &slim::Backend::Demoplan(config.into()),
             limits,
             |_| {},
         );
@@ -418,18 +411,12 @@ pub fn tower_problem(
             within("cubes", cubes, 2, 64, learn::DEFAULT_CUBES)?,
             within("hands", hands, 1, 2, learn::DEFAULT_HANDS.len())?,
         );
-        let tower = match (&tower, paper_goal) {
-            (Some(list), None) => Ok(learn::Tower::listed(list)),
-            (None, Some(n)) => learn::Tower::paper_goal(n),
-            _ => {
-                return Err(Failure::plain(
-                    ExitCode::USAGE,
-                    "give the goal with tower or paper_goal, one of them",
-                ))
-            }
-        };
+        let tower = learn::Tower::chosen(tower.as_deref(), paper_goal);
         tower.and_then(|t| t.problem_text(&scene)).map_err(|e| {
             let message = match &e {
+                learn::TowerError::NoGoal => {
+                    "give the goal with tower or paper_goal, one of them".to_string()
+                }
                 learn::TowerError::NoPaperGoal(n) => format!("paper_goal {n}: {e}"),
                 learn::TowerError::TooShort => format!("{e}: tower [\"c1\", \"c2\"]"),
                 _ => e.to_string(),

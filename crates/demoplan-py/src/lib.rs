@@ -33,12 +33,16 @@ fn run(py: Python<'_>, argv: Vec<OsString>, program: Option<Vec<OsString>>) -> i
 type PlanAnswer = (String, Option<String>, Option<u64>, String);
 
 /// Plans `problem` in `domain` (PDDL texts; the names are where they came from, for
-/// diagnostics) with `search` under `time_limit` seconds and `memory_limit` bytes of
-/// Rust heap on top of what the process holds at the start. The GIL is released; the
-/// calling thread wakes every 50 ms to let Python handle signals, and a Ctrl-C sets the
-/// run's cancel flag, which every phase checks with its limits.
+/// diagnostics) with `search` or the configuration `alias` names
+/// ([`slim::PlannerConfig::resolve`]; neither: `astar(lmcut())`), translated with the
+/// translator options `demoplan plan` takes (`--h2-mutexes`,
+/// `--remove-dominated-operators`; switched on beside an alias's own), under `time_limit`
+/// seconds and `memory_limit` bytes of Rust heap on top of what the process holds at the
+/// start. The GIL is released; the calling thread wakes every 50 ms to let Python handle
+/// signals, and a Ctrl-C sets the run's cancel flag, which every phase checks with its
+/// limits.
 #[pyfunction]
-#[pyo3(signature = (domain, domain_name, problem, problem_name, search, time_limit=None, memory_limit=None))]
+#[pyo3(signature = (domain, domain_name, problem, problem_name, search, alias=None, time_limit=None, memory_limit=None, h2_mutexes=false, remove_dominated_operators=false))]
 #[allow(clippy::too_many_arguments)]
 fn plan(
     py: Python<'_>,
@@ -46,11 +50,18 @@ fn plan(
     domain_name: String,
     problem: String,
     problem_name: String,
-    search: String,
+    search: Option<String>,
+    alias: Option<String>,
     time_limit: Option<f64>,
     memory_limit: Option<u64>,
+    h2_mutexes: bool,
+    remove_dominated_operators: bool,
 ) -> PyResult<PlanAnswer> {
     let start = Instant::now();
+    let options = translate::TranslateOptions {
+        h2_mutexes,
+        remove_dominated_operators,
+    };
     let time = seconds(py, time_limit)?;
     let flag = CancelFlag::take();
     let limits = slim::RunLimits {
@@ -62,11 +73,10 @@ fn plan(
     task_limits.cancel = Some(flag.0);
     let answer = run_cancellable(py, flag.0, move || {
         plan_texts(
-            &domain,
-            Path::new(&domain_name),
-            &problem,
-            Path::new(&problem_name),
-            &search,
+            (&domain, Path::new(&domain_name)),
+            (&problem, Path::new(&problem_name)),
+            (search.as_deref(), alias.as_deref()),
+            options,
             &task_limits,
             start,
         )
@@ -78,24 +88,26 @@ fn plan(
     }
 }
 
+/// Plans the task of the texts `domain` and `problem`, each with the name diagnostics
+/// give it.
 fn plan_texts(
-    domain_text: &str,
-    domain_path: &Path,
-    problem_text: &str,
-    problem_path: &Path,
-    search_string: &str,
+    (domain_text, domain_path): (&str, &Path),
+    (problem_text, problem_path): (&str, &Path),
+    (search, alias): (Option<&str>, Option<&str>),
+    options: translate::TranslateOptions,
     limits: &task::Limits,
     start: Instant,
 ) -> Result<PlanAnswer, Failure> {
-    let config = search::parse_search(search_string)
-        .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, format!("search: {e}")))?;
+    let search = search.or(Some("astar(lmcut())").filter(|_| alias.is_none()));
+    let config = slim::PlannerConfig::resolve(search, alias, options)
+        .map_err(|e| Failure::plain(e.exit_code(), e.to_string()))?;
     let (domain, problem) = parse_pddl(domain_text, domain_path, problem_text, problem_path)?;
     let input = slim::PlanInput::Pddl {
         domain: &domain,
         problem: &problem,
-        options: Default::default(),
+        options: config.translator,
     };
-    let logged = slim::plan_logged(input, &config, limits, start, &mut |_| {})
+    let logged = slim::plan_logged(input, &config.search, limits, start, &mut |_| {})
         .map_err(|e| Failure::plain(e.exit_code(), e.message(problem_path)))?;
     let record = logged.statistics_record(None);
     let statistics = serde_json::to_string(&record)

@@ -6,6 +6,7 @@ use std::time::Duration;
 
 use slim::ExitCode;
 
+use crate::grid::GridRun;
 use crate::{ExperimentError, Reproduction, StudyOutcome};
 
 impl ExperimentError {
@@ -29,8 +30,8 @@ impl ExperimentError {
 
 /// A grid whose cells all ran and whose plans all passed the execution check succeeded;
 /// a crashed cell or a failed check is a failed check (1).
-fn checked(crashed: usize, failed_executions: usize) -> ExitCode {
-    if crashed > 0 || failed_executions > 0 {
+fn checked(grid: &GridRun) -> ExitCode {
+    if grid.crashed > 0 || grid.failed_executions() > 0 {
         ExitCode::CHECK_FAILED
     } else {
         ExitCode::SUCCESS
@@ -61,7 +62,7 @@ impl Reproduction {
         format!(
             "Wrote {} ({} runs in {:.0} s): open {}\n",
             out.display(),
-            self.records.len(),
+            self.grid.records.len(),
             elapsed.as_secs_f64(),
             self.report.display()
         )
@@ -70,12 +71,12 @@ impl Reproduction {
     /// What failed, for standard error: crashed cells and plans that failed the
     /// execution check.
     pub fn failures(&self) -> Option<String> {
-        failures(self.crashed, self.failed_executions)
+        failures(self.grid.crashed, self.grid.failed_executions())
     }
 
     /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.crashed, self.failed_executions)
+        checked(&self.grid)
     }
 }
 
@@ -84,33 +85,34 @@ impl StudyOutcome {
     /// time (when any ran: not after `--collect` or with every result reused), in
     /// `elapsed`, failed execution checks, and where the results are.
     pub fn closing_line(&self, out: &Path, elapsed: Duration) -> String {
-        let at_once = if self.computed > 0 {
-            format!(", {} at a time", self.jobs)
+        let grid = &self.grid;
+        let at_once = if grid.computed > 0 {
+            format!(", {} at a time", grid.jobs)
         } else {
             String::new()
         };
         format!(
             "Study: {} runs ({} computed now, {} from earlier results{at_once}) in {:.0} s; \
              {} plan(s) failed the execution check. Wrote {}: open {}\n",
-            self.records.len(),
-            self.computed,
-            self.records.len().saturating_sub(self.computed),
+            grid.records.len(),
+            grid.computed,
+            grid.records.len().saturating_sub(grid.computed),
             elapsed.as_secs_f64(),
-            self.failed_executions,
+            grid.failed_executions(),
             out.display(),
             self.report.display()
         )
     }
 
-    /// What failed, for standard error: crashed cells and plans that failed the
-    /// execution check.
+    /// What failed, for standard error: crashed cells (the closing line counts the
+    /// plans that failed the execution check).
     pub fn failures(&self) -> Option<String> {
-        failures(self.crashed, 0)
+        failures(self.grid.crashed, 0)
     }
 
     /// [`ExitCode::CHECK_FAILED`] if a cell crashed or a plan failed the execution check.
     pub fn exit_code(&self) -> ExitCode {
-        checked(self.crashed, self.failed_executions)
+        checked(&self.grid)
     }
 }
 
@@ -118,28 +120,38 @@ impl StudyOutcome {
 mod tests {
     use super::*;
 
+    /// A grid of `runs` records, the first `failed` of them plans that failed the
+    /// execution check.
+    fn grid(runs: usize, failed: usize, computed: usize, crashed: usize, jobs: usize) -> GridRun {
+        let mut records = vec![crate::RunRecord::blank(&crate::grid::tests::cell(1)); runs];
+        for r in &mut records[..failed] {
+            r.executed = Some(false);
+        }
+        GridRun {
+            records,
+            computed,
+            crashed,
+            jobs,
+        }
+    }
+
     #[test]
     fn a_failed_execution_check_fails_the_grid_and_says_so() {
         let mut done = StudyOutcome {
-            records: Vec::new(),
-            computed: 0,
-            crashed: 0,
-            jobs: 3,
-            failed_executions: 0,
+            grid: grid(0, 0, 0, 0, 3),
             report: "out/report.html".into(),
         };
         assert_eq!(done.exit_code(), ExitCode::SUCCESS);
-        done.failed_executions = 2;
+        done.grid = grid(2, 2, 0, 0, 3);
         assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
         let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
         assert_eq!(
             line,
-            "Study: 0 runs (0 computed now, 0 from earlier results) in 7 s; 2 \
+            "Study: 2 runs (0 computed now, 2 from earlier results) in 7 s; 2 \
              plan(s) failed the execution check. Wrote out: open out/report.html\n"
         );
         // Only runs computed now ran at a time (not those collected or reused).
-        done.records = vec![crate::RunRecord::blank(&crate::grid::tests::cell(1)); 4];
-        done.computed = 1;
+        done.grid = grid(4, 0, 1, 0, 3);
         let line = done.closing_line(Path::new("out"), Duration::from_secs(7));
         assert!(
             line.starts_with("Study: 4 runs (1 computed now, 3 from earlier results, 3 at a time)"),
@@ -148,11 +160,7 @@ mod tests {
         let reproduction = Reproduction {
             summary: String::new(),
             tables: String::new(),
-            records: Vec::new(),
-            computed: 0,
-            crashed: 0,
-            jobs: 1,
-            failed_executions: 1,
+            grid: grid(1, 1, 0, 0, 1),
             report: "r/report.html".into(),
         };
         assert_eq!(reproduction.exit_code(), ExitCode::CHECK_FAILED);
@@ -165,15 +173,11 @@ mod tests {
     #[test]
     fn a_crashed_cell_fails_the_grid_and_says_so() {
         let mut done = StudyOutcome {
-            records: Vec::new(),
-            computed: 4,
-            crashed: 0,
-            jobs: 2,
-            failed_executions: 0,
+            grid: grid(4, 0, 4, 0, 2),
             report: "out/report.html".into(),
         };
         assert_eq!(done.failures(), None);
-        done.crashed = 1;
+        done.grid.crashed = 1;
         assert_eq!(done.exit_code(), ExitCode::CHECK_FAILED);
         assert_eq!(
             done.failures().as_deref(),
@@ -185,11 +189,7 @@ mod tests {
         let reproduction = Reproduction {
             summary: String::new(),
             tables: String::new(),
-            records: Vec::new(),
-            computed: 4,
-            crashed: 2,
-            jobs: 2,
-            failed_executions: 1,
+            grid: grid(4, 1, 4, 2, 2),
             report: "r/report.html".into(),
         };
         assert_eq!(reproduction.exit_code(), ExitCode::CHECK_FAILED);

@@ -259,7 +259,7 @@ impl Planners {
         } else {
             let config = search::parse_search(&search)
                 .map_err(|e| ExperimentError::Condition(e.to_string()))?;
-            Ok(Backend::Demoplan(config))
+            Ok(Backend::Demoplan(config.into()))
         }
     }
 }

@@ -57,7 +57,9 @@ pub use numbers::{numbers, sizes};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
 pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
 pub use reproduce::{reproduce, reproduce_cell, reproduce_cells, ReproduceOptions, Reproduction};
-pub use study::{study, study_cell, study_cells, study_grid, StudyOptions, StudyOutcome};
+pub use study::{
+    study, study_cell, study_cells, study_grid, StudyConditionArgs, StudyOptions, StudyOutcome,
+};
 
 /// Where a grid is: cells done (reused ones among them) and failed of the total, the
 /// cell now running, time since start.

@@ -5,53 +5,37 @@
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use std::time::Duration;
 
 use learn::{levels, per_type, DomainOptions};
 use report::Measure;
-use slim::{FastDownward, MemoryProbe, Outcome};
+use slim::Outcome;
 
 use crate::cell::{Cell, Conditions, LevelChoice, Planner};
 use crate::findings::{findings, median_record};
-use crate::grid::{collect, run_cell, run_grid, RunLayout, Runner};
+use crate::grid::{GridExperiment, GridRun, GridSettings};
 use crate::lab::{tower_problem, towers, Lab};
 use crate::output::{condition_fields, create_dir, machine, opt, write_png, write_text};
 use crate::ratio::ratio;
 use crate::record::RunRecord;
-use crate::{CellCommand, ExperimentError, Progress};
+use crate::{ExperimentError, Progress};
 
 /// What `reproduce` runs.
 #[derive(Debug, Clone)]
 pub struct ReproduceOptions {
     /// The output folder (created if missing).
     pub out: PathBuf,
-    /// Per run.
-    pub time_limit: Duration,
     /// Runs per cell; tables show the median by search time.
     pub repeat: u32,
     /// The paper's goals to plan, 1 to 5.
     pub goals: Vec<usize>,
     /// Only these priority levels (`None`: every level).
     pub prios: Option<Vec<usize>>,
-    /// Fast Downward, to run the same grid on it beside demoplan.
-    pub fast_downward: Option<FastDownward>,
     /// The simulator's seed.
     pub seed: u64,
     /// Hands in the problems' scene.
     pub hands: usize,
-    /// How to measure demoplan's peak heap per run.
-    pub memory: Option<MemoryProbe>,
-    /// Heap bytes per run, on top of what the process holds when the run starts
-    /// (`None`: no limit); a run that reaches it is recorded as `memory`.
-    pub memory_limit: Option<u64>,
-    /// Run the cells in child processes, several at a time; `None` runs them here,
-    /// one after another.
-    pub children: Option<CellCommand>,
-    /// Compute every cell again, even those with a result in the folder.
-    pub force: bool,
-    /// Compute nothing: build the report from the results in the folder (a cluster's
-    /// collect job); cells without one are an error naming them.
-    pub collect_only: bool,
+    /// How the cells run (limits, Fast Downward beside, processes).
+    pub grid: GridSettings,
 }
 
 /// What `reproduce` did.
@@ -61,16 +45,8 @@ pub struct Reproduction {
     pub summary: String,
     /// `tables.md`.
     pub tables: String,
-    /// Every run's record.
-    pub records: Vec<RunRecord>,
-    /// Cells computed now (the others were in the folder already).
-    pub computed: usize,
-    /// Cells whose process crashed now (their records say why).
-    pub crashed: usize,
-    /// Cells computed at once.
-    pub jobs: usize,
-    /// Plans that failed the execution check.
-    pub failed_executions: usize,
+    /// Every run's record, and what the grid computed now.
+    pub grid: GridRun,
     /// The report page.
     pub report: PathBuf,
 }
@@ -78,12 +54,8 @@ pub struct Reproduction {
 /// The grid: every planner x level (of `prios`) x goal x repeat, then Algorithm 1 per
 /// planner and goal (its widening gives ratio_alg1).
 fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
-    let mut planners = Planner::DEMOPLAN.to_vec();
-    if options.fast_downward.is_some() {
-        planners.extend(Planner::DEMOPLAN.map(Planner::with_fast_downward));
-    }
     let mut cells = Vec::new();
-    for &planner in &planners {
+    for planner in options.grid.planners() {
         for &prio in prios {
             for &g in &options.goals {
                 for repeat in 0..options.repeat {
@@ -91,7 +63,7 @@ fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
                         conditions: Conditions::paper_goal(options.seed, g, options.hands),
                         level: LevelChoice::Prio(prio),
                         planner,
-                        time_limit: options.time_limit,
+                        time_limit: options.grid.time_limit,
                         repeat,
                     });
                 }
@@ -102,7 +74,7 @@ fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
                 conditions: Conditions::paper_goal(options.seed, g, options.hands),
                 level: LevelChoice::Algorithm1,
                 planner,
-                time_limit: options.time_limit,
+                time_limit: options.grid.time_limit,
                 repeat: 0,
             });
         }
@@ -112,12 +84,7 @@ fn reproduce_grid(options: &ReproduceOptions, prios: &[usize]) -> Vec<Cell> {
 
 /// The lab of a reproduction and its one library (seed 7's by default), learned once.
 fn lab_and_library(options: &ReproduceOptions) -> Result<(Lab, learn::Library), ExperimentError> {
-    let mut lab = Lab::new(
-        simulate::SimParams::default(),
-        options.fast_downward.clone(),
-        options.memory,
-        options.memory_limit,
-    );
+    let mut lab = options.grid.lab(simulate::SimParams::default());
     let base = Conditions::paper_goal(options.seed, 1, options.hands);
     let library = lab.library(&base)?.clone();
     Ok((lab, library))
@@ -148,13 +115,20 @@ pub fn reproduce_cells(options: &ReproduceOptions) -> Result<Vec<Cell>, Experime
 /// process of a reproduction run with [`ReproduceOptions::children`] does.
 pub fn reproduce_cell(options: &ReproduceOptions, id: &str) -> Result<RunRecord, ExperimentError> {
     let (mut lab, cells) = lab_and_cells(options)?;
-    run_cell(
-        &mut lab,
-        &cells,
-        id,
-        &RunLayout::new(&options.out),
-        options.force,
-    )
+    options.grid.run_cell(&mut lab, &cells, id, &options.out)
+}
+
+impl GridExperiment for ReproduceOptions {
+    const NAME: &'static str = "reproduce";
+    fn settings(&self) -> &GridSettings {
+        &self.grid
+    }
+    fn cells(&self) -> Result<Vec<Cell>, ExperimentError> {
+        reproduce_cells(self)
+    }
+    fn cell(&self, id: &str) -> Result<RunRecord, ExperimentError> {
+        reproduce_cell(self, id)
+    }
 }
 
 /// The paper's goal of a record (its tower's height less one).
@@ -252,17 +226,10 @@ pub fn reproduce(
     };
     // A grid: each cell writes its run folder as it finishes; cells already there are
     // reused unless forced.
-    let runner = match &options.children {
-        Some(command) => Runner::Children(command),
-        None => Runner::InProcess(&mut lab),
-    };
-    let jobs = runner.jobs();
-    let (records, computed, crashed) = if options.collect_only {
-        (collect(out, &cells)?, 0, 0)
-    } else {
-        let grid = run_grid(runner, &cells, out, options.force, progress, &describe)?;
-        (grid.records, grid.computed, grid.crashed)
-    };
+    let grid = options
+        .grid
+        .run_or_collect(&mut lab, &cells, out, progress, &describe)?;
+    let records = &grid.records;
 
     // Results.
     for r in records.iter().filter(|r| r.solved() && r.repeat == 0) {
@@ -287,7 +254,7 @@ pub fn reproduce(
         )?;
     }
     let complete = chosen.len() == all_levels.len();
-    let mut notes = findings(&records);
+    let mut notes = findings(records);
     if !complete {
         notes.push(
             "The grid leaves out some levels (--prios): its largest domain is not the full \
@@ -296,13 +263,13 @@ pub fn reproduce(
         );
     }
     notes.extend(ground_actions(&chosen, &problems));
-    let experiment = experiment(&records, &all_levels, &problems, options, &notes);
-    let tables = tables_markdown(&experiment, &records, options, &notes);
+    let experiment = experiment(records, &all_levels, &problems, options, &notes);
+    let tables = tables_markdown(&experiment, records, options, &notes);
     write_text(&out.join("tables.md"), &tables)?;
-    write_text(&out.join("results.csv"), &results_csv(&records))?;
+    write_text(&out.join("results.csv"), &results_csv(records))?;
     write_text(
         &out.join("results.json"),
-        &results_json(&records, options, &notes),
+        &results_json(records, options, &notes),
     )?;
     let mut artefacts: Vec<(String, String)> = Vec::new();
     for planner in experiment.planners() {
@@ -353,15 +320,10 @@ pub fn reproduce(
     }
     let page = out.join("report.html");
     write_text(&page, &report::report_html(&experiment, &artefacts))?;
-    let failed_executions = records.iter().filter(|r| r.executed == Some(false)).count();
     Ok(Reproduction {
         summary,
         tables,
-        records,
-        computed,
-        crashed,
-        jobs,
-        failed_executions,
+        grid,
         report: page,
     })
 }
@@ -473,19 +435,15 @@ fn experiment(
                 tower: tower.clone(),
             })
             .collect(),
-        time_limit: options.time_limit.as_secs_f64(),
+        time_limit: options.grid.time_limit.as_secs_f64(),
         repeat: options.repeat as usize,
         seed: options.seed,
         // Parallel timings are noisier: the report says how many ran at once.
-        machine: format!(
-            "{}; {} run(s) at once",
-            machine(),
-            options.children.as_ref().map_or(1, |c| c.jobs.max(1))
-        ),
+        machine: format!("{}; {} run(s) at once", machine(), options.grid.at_once()),
         versions: format!(
             "demoplan {}; Fast Downward {}",
             env!("CARGO_PKG_VERSION"),
-            if options.fast_downward.is_some() {
+            if options.grid.fast_downward.is_some() {
                 "as installed (see --fd)"
             } else {
                 "not run"
@@ -515,7 +473,7 @@ fn tables_markdown(
     options: &ReproduceOptions,
     notes: &[String],
 ) -> String {
-    let limit = report::format_limit(options.time_limit.as_secs_f64());
+    let limit = report::format_limit(options.grid.time_limit.as_secs_f64());
     let mut s = String::from("# Search time and total time per domain and goal\n\n");
     let _ = writeln!(
         s,
@@ -691,7 +649,7 @@ fn results_json(records: &[RunRecord], options: &ReproduceOptions, notes: &[Stri
         "format": "demoplan-reproduce",
         "version": 2,
         "seed": options.seed,
-        "time_limit_s": options.time_limit.as_secs_f64(),
+        "time_limit_s": options.grid.time_limit.as_secs_f64(),
         "repeat": options.repeat,
         "findings": notes,
         "runs": records.iter().map(|r| {

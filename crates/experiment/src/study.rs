@@ -9,19 +9,17 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use std::time::Duration;
 
 use report::{html_escape, Bound, Measure, Ratio};
-use slim::{FastDownward, MemoryProbe};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
-use crate::grid::{collect, run_cell, run_grid, RunLayout, Runner};
+use crate::grid::{named_option, GridExperiment, GridRun, GridSettings};
 use crate::lab::Lab;
 use crate::output::{condition_fields, create_dir, machine, write_png, write_text};
 use crate::ratio::{quartiles, ratio, ratio_text, Quartiles};
 use crate::record::RunRecord;
 use crate::reproduce::{runs_csv_row, RUNS_HEADER};
-use crate::{CellCommand, ExperimentError, Progress};
+use crate::{ExperimentError, Progress};
 
 /// The most cubes a scene may hold (the cube world's table has room for them).
 pub const MAX_CUBES: usize = 24;
@@ -42,47 +40,102 @@ pub struct StudyOptions {
     /// Also run every condition with operators that change nothing kept in the domains.
     pub keep_without_effects: bool,
     pub params: simulate::SimParams,
-    pub time_limit: Duration,
-    pub fast_downward: Option<FastDownward>,
-    pub memory: Option<MemoryProbe>,
-    /// Heap bytes per run, on top of what the process holds when the run starts
-    /// (`None`: no limit); a run that reaches it is recorded as `memory`.
-    pub memory_limit: Option<u64>,
-    /// Run the cells in child processes, several at a time; `None` runs them here,
-    /// one after another.
-    pub children: Option<CellCommand>,
-    /// Compute every cell again, even those with a result in the folder.
-    pub force: bool,
-    /// Compute nothing: build the report from the results in the folder (a cluster's
-    /// collect job); cells without one are an error naming them.
-    pub collect_only: bool,
+    /// How the cells run (limits, Fast Downward beside, processes).
+    pub grid: GridSettings,
+}
+
+/// What a study varies, as its command line gives it (`demoplan study`): lists of
+/// numbers as [`crate::numbers`] and [`crate::sizes`] read them, groupings by name.
+/// With the `clap` feature these are its options, declared once here.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+pub struct StudyConditionArgs {
+    /// Seeds of the simulated studies: `1-20` (inclusive), `3`, or `1,4,9`.
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "RANGE", default_value = "1-20")
+    )]
+    pub seeds: String,
+    /// Simulated participants per study.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 3))]
+    pub participants: u32,
+    /// Demonstrations per participant.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 4))]
+    pub per_participant: u32,
+    /// Hands in the problems' scene, e.g. `1,2`.
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "LIST", default_value = "1,2")
+    )]
+    pub hands: String,
+    /// Cubes on the table beyond the towers', e.g. `0,2`.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "LIST", default_value = "0"))]
+    pub distractors: String,
+    /// Tower heights in cubes: `2-8` or a list.
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "RANGE", default_value = "2-8")
+    )]
+    pub heights: String,
+    /// Towers per goal, built from distinct cubes, e.g. `1,2`.
+    #[cfg_attr(feature = "clap", arg(long, value_name = "LIST", default_value = "1"))]
+    pub towers: String,
+    /// How segments become activities: `settled`, `runs`, or both (`settled,runs`).
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "LIST", default_value = "settled")
+    )]
+    pub activities: String,
+    /// Also run every condition with operators that change nothing kept in the domains
+    /// (they are dropped by default).
+    #[cfg_attr(feature = "clap", arg(long))]
+    pub keep_without_effects: bool,
+}
+
+impl StudyConditionArgs {
+    /// The study of these conditions, writing into `out`, with the simulator's `params`,
+    /// its cells run with `grid`. A list that does not read is an
+    /// [`ExperimentError::Options`] naming its option; [`study`] checks the values.
+    pub fn options(
+        &self,
+        out: PathBuf,
+        params: simulate::SimParams,
+        grid: GridSettings,
+    ) -> Result<StudyOptions, ExperimentError> {
+        let sizes = |option: &str, text: &str| crate::sizes(text).map_err(named_option(option));
+        let mut activities: Vec<String> = (self.activities.split(','))
+            .map(|a| a.trim().to_string())
+            .collect();
+        activities.dedup();
+        Ok(StudyOptions {
+            out,
+            seeds: crate::numbers(&self.seeds).map_err(named_option("--seeds"))?,
+            participants: self.participants,
+            per_participant: self.per_participant,
+            hands: sizes("--hands", &self.hands)?,
+            distractors: sizes("--distractors", &self.distractors)?,
+            heights: sizes("--heights", &self.heights)?,
+            towers: sizes("--towers", &self.towers)?,
+            activities,
+            keep_without_effects: self.keep_without_effects,
+            params,
+            grid,
+        })
+    }
 }
 
 /// What a study did.
 #[derive(Debug, Clone)]
 pub struct StudyOutcome {
-    /// Every cell's record.
-    pub records: Vec<RunRecord>,
-    /// Cells computed now (the others were in the results already).
-    pub computed: usize,
-    /// Cells whose process crashed now (their records say why).
-    pub crashed: usize,
-    /// Cells computed at once.
-    pub jobs: usize,
-    /// Plans that failed the execution check.
-    pub failed_executions: usize,
+    /// Every cell's record, and what the grid computed now.
+    pub grid: GridRun,
     pub report: PathBuf,
 }
 
 impl StudyOptions {
     /// The lab that computes the study's cells.
     fn lab(&self) -> Lab {
-        Lab::new(
-            self.params.clone(),
-            self.fast_downward.clone(),
-            self.memory,
-            self.memory_limit,
-        )
+        self.grid.lab(self.params.clone())
     }
 
     fn check(&self) -> Result<(), ExperimentError> {
@@ -119,7 +172,7 @@ impl StudyOptions {
         if self.participants == 0 || self.per_participant == 0 {
             return bad("--participants and --per-participant must be at least 1".into());
         }
-        if self.time_limit.is_zero() {
+        if self.grid.time_limit.is_zero() {
             return bad("--time-limit must be more than 0".into());
         }
         let most = self.heights.iter().max().copied().unwrap_or(0)
@@ -132,14 +185,6 @@ impl StudyOptions {
             ));
         }
         Ok(())
-    }
-
-    fn planners(&self) -> Vec<Planner> {
-        let mut p = Planner::DEMOPLAN.to_vec();
-        if self.fast_downward.is_some() {
-            p.extend(Planner::DEMOPLAN.map(Planner::with_fast_downward));
-        }
-        p
     }
 }
 
@@ -172,7 +217,7 @@ pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {
                                     activities: activities.clone(),
                                     keep_without_effects: keep,
                                 };
-                                for planner in options.planners() {
+                                for planner in options.grid.planners() {
                                     for level in [
                                         LevelChoice::Prio(1),
                                         LevelChoice::Full,
@@ -182,7 +227,7 @@ pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {
                                             conditions: conditions.clone(),
                                             level,
                                             planner,
-                                            time_limit: options.time_limit,
+                                            time_limit: options.grid.time_limit,
                                             repeat: 0,
                                         });
                                     }
@@ -218,53 +263,38 @@ pub fn study(
             c.level.name()
         )
     };
-    let runner = match &options.children {
-        Some(command) => Runner::Children(command),
-        None => Runner::InProcess(&mut lab),
-    };
-    let jobs = runner.jobs();
-    let (records, computed, crashed) = if options.collect_only {
-        (collect(out, &cells)?, 0, 0)
-    } else {
-        let grid = run_grid(runner, &cells, out, options.force, progress, &describe)?;
-        (grid.records, grid.computed, grid.crashed)
-    };
+    let grid = options
+        .grid
+        .run_or_collect(&mut lab, &cells, out, progress, &describe)?;
+    let records = &grid.records;
 
     write_text(&out.join("study.json"), &study_json(options, cells.len()))?;
     let mut runs = format!("{RUNS_HEADER},levels_tried\n");
-    for r in &records {
+    for r in records {
         let _ = writeln!(runs, "{},{}", runs_csv_row(r), r.widening.len());
     }
     write_text(&out.join("runs.csv"), &runs)?;
-    let table = ratio_table(&records);
+    let table = ratio_table(records);
     write_text(&out.join("ratios.csv"), &ratios_csv(&table))?;
     let mut figures = Vec::new();
     for (measure, name) in [
         (Measure::Search, "scaling"),
         (Measure::Total, "scaling-total"),
     ] {
-        let panels = scaling_panels(&records, measure);
+        let panels = scaling_panels(records, measure);
         let figure = report::scaling_figure(
             &format!("{} against tower height", measure.title()),
             measure,
             &panels,
-            options.time_limit.as_secs_f64(),
+            options.grid.time_limit.as_secs_f64(),
         );
         write_text(&out.join(format!("{name}.svg")), &figure.svg())?;
         write_png(&out.join(format!("{name}.png")), &figure)?;
         figures.push((format!("{name}.svg"), format!("{name}.png"), measure));
     }
     let page = out.join("report.html");
-    write_text(&page, &report_page(options, &records, &table, &figures))?;
-    let failed_executions = records.iter().filter(|r| r.executed == Some(false)).count();
-    Ok(StudyOutcome {
-        records,
-        computed,
-        crashed,
-        jobs,
-        failed_executions,
-        report: page,
-    })
+    write_text(&page, &report_page(options, records, &table, &figures))?;
+    Ok(StudyOutcome { grid, report: page })
 }
 
 /// The study's cells, in their order, once its options are checked (`--list-cells`).
@@ -279,14 +309,22 @@ pub fn study_cells(options: &StudyOptions) -> Result<Vec<Cell>, ExperimentError>
 pub fn study_cell(options: &StudyOptions, id: &str) -> Result<RunRecord, ExperimentError> {
     options.check()?;
     let cells = study_grid(options);
-    let mut lab = options.lab();
-    run_cell(
-        &mut lab,
-        &cells,
-        id,
-        &RunLayout::new(&options.out),
-        options.force,
-    )
+    options
+        .grid
+        .run_cell(&mut options.lab(), &cells, id, &options.out)
+}
+
+impl GridExperiment for StudyOptions {
+    const NAME: &'static str = "study";
+    fn settings(&self) -> &GridSettings {
+        &self.grid
+    }
+    fn cells(&self) -> Result<Vec<Cell>, ExperimentError> {
+        study_cells(self)
+    }
+    fn cell(&self, id: &str) -> Result<RunRecord, ExperimentError> {
+        study_cell(self, id)
+    }
 }
 
 fn study_json(options: &StudyOptions, cells: usize) -> String {
@@ -304,10 +342,10 @@ fn study_json(options: &StudyOptions, cells: usize) -> String {
         "keep_without_effects": options.keep_without_effects,
         "params": options.params.to_json(),
         "params_key": params_key(&options.params),
-        "time_limit_s": options.time_limit.as_secs_f64(),
-        "with_fd": options.fast_downward.is_some(),
+        "time_limit_s": options.grid.time_limit.as_secs_f64(),
+        "with_fd": options.grid.fast_downward.is_some(),
         "cells": cells,
-        "jobs": options.children.as_ref().map_or(1, |c| c.jobs.max(1)),
+        "jobs": options.grid.at_once(),
         "machine": machine(),
     });
     let mut text = serde_json::to_string_pretty(&value).unwrap_or_default();
@@ -520,11 +558,11 @@ fn report_page(
         } else {
             "dropped"
         },
-        report::format_limit(options.time_limit.as_secs_f64()),
+        report::format_limit(options.grid.time_limit.as_secs_f64()),
         html_escape(&format!(
             "{}; {} run(s) at once",
             machine(),
-            options.children.as_ref().map_or(1, |c| c.jobs.max(1))
+            options.grid.at_once()
         ))
     );
     s.push_str(

@@ -179,7 +179,7 @@ pub fn pddl_translate(data: &[u8]) {
     }
 }
 
-/// The search-string parser (`astar(lmcut())`, aliases) on any UTF-8 text.
+/// The search-string parser (`astar(lmcut())`) on any UTF-8 text.
 pub fn search_string(data: &[u8]) {
     if let Ok(text) = std::str::from_utf8(data) {
         let _ = search::parse_search(text);

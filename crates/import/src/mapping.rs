@@ -342,10 +342,23 @@ fn default_labels() -> BTreeMap<String, String> {
 }
 
 impl Mapping {
+    /// A message about the value of `labels.LABEL` in the text of a mapping file (a
+    /// label mapped to no activity), placed where that value starts (1-based line and
+    /// column; 0 and 0 when the text has no such label): a [`Mapping`] keeps no positions.
+    pub fn label_error(text: &str, label: &str, message: String) -> recording::TextError {
+        let (line, column) = Mapping::label_position(text, label).unwrap_or((0, 0));
+        let field = format!("labels.{label}");
+        recording::TextError {
+            line,
+            column,
+            field,
+            message,
+        }
+    }
+
     /// Where the value of `labels.LABEL` starts in the text of a mapping file (1-based
-    /// line and column), for a message about that label: a [`Mapping`] keeps no
-    /// positions. `None` when the text has no such label.
-    pub fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
+    /// line and column). `None` when the text has no such label.
+    fn label_position(text: &str, label: &str) -> Option<(usize, usize)> {
         #[derive(Deserialize)]
         struct Labels {
             #[serde(default)]
@@ -657,6 +670,17 @@ fn key_error(text: &str, key: &str, message: String) -> MappingError {
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)] // tests, not readers
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_bad_label_is_placed_at_its_value() {
+        let text = "[labels]\nPour = \"Put\"\nSpin = \"Twirl\"\n";
+        let e = Mapping::label_error(text, "Spin", "no such activity".into());
+        assert_eq!((e.line, e.column, e.field.as_str()), (3, 8, "labels.Spin"));
+        assert_eq!(e.message, "no such activity");
+        // A label the text does not have: no place.
+        let e = Mapping::label_error(text, "Jump", String::new());
+        assert_eq!((e.line, e.column), (0, 0));
+    }
 
     #[test]
     fn default_kinds_from_name_parts() {

@@ -67,14 +67,19 @@ pub enum DomainChoice {
     Full,
 }
 
+/// A domain with no operator ([`chosen_domain`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[error("the library has no operator that changes anything; a domain would be empty")]
+pub struct EmptyDomain;
+
 /// The operators of the domain `choice` names, most frequent first per type, and how the
-/// domain names itself (`priority 2`, `full domain`); `None` when no eligible operator
-/// changes anything, so that the domain would be empty.
+/// domain names itself (`priority 2`, `full domain`); [`EmptyDomain`] when no eligible
+/// operator changes anything.
 pub fn chosen_domain(
     library: &Library,
     choice: DomainChoice,
     options: DomainOptions,
-) -> Option<(Vec<Ranked<'_>>, String)> {
+) -> Result<(Vec<Ranked<'_>>, String), EmptyDomain> {
     let (prio, what) = match choice {
         DomainChoice::Priority(prio) => (prio, format!("priority {prio}")),
         DomainChoice::Full => {
@@ -83,7 +88,10 @@ pub fn chosen_domain(
         }
     };
     let operators = operator_subset(library, prio, options);
-    (!operators.is_empty()).then_some((operators, what))
+    match operators.is_empty() {
+        true => Err(EmptyDomain),
+        false => Ok((operators, what)),
+    }
 }
 
 /// The distinct subsets for priority 1, 2, ... up to the full domain, equal consecutive
@@ -411,6 +419,9 @@ pub enum TowerError {
     /// A cube named twice.
     #[error("the tower names `{0}` twice")]
     Twice(String),
+    /// Neither a tower nor a paper goal was given, or both ([`Tower::chosen`]).
+    #[error("give the goal as a tower or as the paper's goal, one of them")]
+    NoGoal,
 }
 
 impl Tower {
@@ -423,6 +434,17 @@ impl Tower {
             .collect();
         let name = format!("tower-{}", cubes.join("-"));
         Tower { cubes, name }
+    }
+
+    /// The goal a problem asks for (`demoplan problem`, the Python `tower_problem`):
+    /// the cubes `listed` ([`Tower::listed`]) or the paper's goal `paper_goal`
+    /// ([`Tower::paper_goal`]), exactly one of them.
+    pub fn chosen(listed: Option<&str>, paper_goal: Option<usize>) -> Result<Tower, TowerError> {
+        match (listed, paper_goal) {
+            (Some(list), None) => Ok(Tower::listed(list)),
+            (None, Some(n)) => Tower::paper_goal(n),
+            _ => Err(TowerError::NoGoal),
+        }
     }
 
     /// The paper's goal `n` (1 to 5), reconstructed ([`paper_goal_tower`]).
@@ -574,6 +596,11 @@ mod tests {
         ));
         assert_eq!(Tower::paper_goal(6), Err(TowerError::NoPaperGoal(6)));
         assert_eq!(Tower::paper_goal(2).unwrap().cubes.len(), 3);
+        // Exactly one of a list and a paper goal.
+        assert_eq!(Tower::chosen(Some("a,b"), None), Ok(Tower::listed("a,b")));
+        assert_eq!(Tower::chosen(None, Some(2)), Tower::paper_goal(2));
+        assert_eq!(Tower::chosen(None, None), Err(TowerError::NoGoal));
+        assert_eq!(Tower::chosen(Some("a,b"), Some(2)), Err(TowerError::NoGoal));
     }
     use crate::operator::{Operator, ParamType};
 
@@ -642,7 +669,10 @@ mod tests {
         let mut l = Library::default();
         l.insert_counted(op(Activity::Idle, 0, false), 2);
         for choice in [DomainChoice::Priority(1), DomainChoice::Full] {
-            assert!(chosen_domain(&l, choice, DomainOptions::default()).is_none());
+            assert_eq!(
+                chosen_domain(&l, choice, DomainOptions::default()).err(),
+                Some(EmptyDomain)
+            );
         }
     }
 

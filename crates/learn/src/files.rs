@@ -42,8 +42,8 @@ pub enum FileError {
         path: PathBuf,
         error: recording::ReadError,
     },
-    /// The ground truth beside a simulated recording, missing or malformed.
-    #[error("{}: {message}", truth.display())]
+    /// The ground truth beside a simulated recording, missing (line 0) or malformed.
+    #[error("{}", truth_message(truth, recording, *line, message))]
     Truth {
         truth: PathBuf,
         recording: PathBuf,
@@ -51,6 +51,18 @@ pub enum FileError {
         line: u64,
         message: String,
     },
+}
+
+/// A missing truth file names the recording it belongs to; a malformed one its line.
+fn truth_message(truth: &Path, recording: &Path, line: u64, message: &str) -> String {
+    match line {
+        0 => format!(
+            "cannot read {} (the ground truth of {}, needed for its labels): {message}",
+            truth.display(),
+            recording.display()
+        ),
+        _ => format!("{}:{line}: {message}", truth.display()),
+    }
 }
 
 fn arff_error(path: &Path) -> impl Fn(ArffError) -> FileError + '_ {
@@ -207,6 +219,61 @@ pub fn labelled_frames(
         hand_state: true,
         left_out: 0,
     })
+}
+
+/// Why [`learn_tree`] learned no tree (besides a file it could not read).
+#[derive(Debug, thiserror::Error)]
+pub enum TreeError {
+    /// A file could not be read.
+    #[error(transparent)]
+    File(#[from] FileError),
+    /// A class was named for hand-state frames, which are learned by their activity.
+    #[error(
+        "--class is for an ARFF data set that is not a hand-state table; hand-state frames \
+         are learned by their activity"
+    )]
+    ClassOfHandStates,
+    /// The files hold no labelled frame.
+    #[error("no labelled frames to learn from")]
+    NoFrames,
+}
+
+/// A decision tree learned with C4.5 from `files`, as `classify --learn` learns it: a
+/// lone ARFF file that is a nominal data set ([`nominal_dataset`]) as it is, with
+/// `class` as its class; otherwise the labelled frames of every file
+/// ([`labelled_frames`], grounded and labelled with what `frames` reads, only then),
+/// their hand states against their activities. Only the cases are kept (C4.5 needs them
+/// all at once), not the files' rows. `warn` hears what an ARFF reader accepted.
+pub fn learn_tree<E: From<TreeError>>(
+    files: &[PathBuf],
+    class: Option<&str>,
+    frames: impl FnOnce() -> Result<(GroundingConfig, LabelMap), E>,
+    warn: &mut dyn FnMut(&Path, &ArffWarning),
+) -> Result<segment::LearnedTree, E> {
+    let learner = segment::C45::default();
+    if let [path] = files {
+        if segment::is_arff_file(path) {
+            let nominal = nominal_dataset(path, class, &mut |w| warn(path, w));
+            if let Some(data) = nominal.map_err(TreeError::from)? {
+                return Ok(learner.learn_checked(&data));
+            }
+        }
+    }
+    if class.is_some() {
+        return Err(TreeError::ClassOfHandStates.into());
+    }
+    let (config, map) = frames()?;
+    let mut cases: Vec<(HandFacts, Activity)> = Vec::new();
+    let mut hand_state = true;
+    for path in files {
+        let mut each = |hand, label| cases.push((hand, label));
+        let labelled = labelled_frames(path, &config, &map, &mut each, &mut |w| warn(path, w));
+        hand_state &= labelled.map_err(TreeError::from)?.hand_state;
+    }
+    if cases.is_empty() {
+        return Err(TreeError::NoFrames.into());
+    }
+    Ok(segment::learn_activity_tree(&learner, &cases, hand_state))
 }
 
 #[cfg(test)]

@@ -40,12 +40,12 @@ mod update;
 pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
 pub use domain::{
     action, chosen_domain, domain, domain_name, levels, operator_subset, paper_goal_tower,
-    pddl_predicate, per_type, problem, tower_goal, DomainChoice, DomainOptions, Level, Scene,
-    Tower, TowerError, DEFAULT_CUBES, DEFAULT_HANDS,
+    pddl_predicate, per_type, problem, tower_goal, DomainChoice, DomainOptions, EmptyDomain, Level,
+    Scene, Tower, TowerError, DEFAULT_CUBES, DEFAULT_HANDS,
 };
 pub use files::{
-    arff_reader, hand_table, labelled_frames, nominal_dataset, read_truth, segment_arff,
-    segment_path, FileError, Labelled, ARFF_FRAME_RATE,
+    arff_reader, hand_table, labelled_frames, learn_tree, nominal_dataset, read_truth,
+    segment_arff, segment_path, FileError, Labelled, TreeError, ARFF_FRAME_RATE,
 };
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};

@@ -227,6 +227,25 @@ impl Grouping {
     }
 }
 
+/// `learn --activities`: the groupings by [`Grouping::name`], the default first, each
+/// with its line of `--help`.
+#[cfg(feature = "clap")]
+impl clap::ValueEnum for Grouping {
+    fn value_variants<'a>() -> &'a [Self] {
+        &Grouping::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        let help = match self {
+            Grouping::Settled => "An activity ends where the Idle right after it ends",
+            Grouping::Runs => {
+                "Runs of one class; the Idle after an activity is an activity of its own"
+            }
+        };
+        Some(clap::builder::PossibleValue::new(self.name()).help(help))
+    }
+}
+
 /// The activities of a recording, grouped as `grouping` says; each is one segment (start
 /// state of its first piece; end, end state, objects and tuple of its last). Sorted by
 /// hand, then time.

@@ -26,6 +26,38 @@ pub fn domain_file_candidates(problem: &Path) -> Vec<PathBuf> {
     .collect()
 }
 
+/// No domain file beside a problem given alone: the candidates tried, by name.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "could not find the domain file of {} using the naming rules (tried {}); name it on \
+     the command line",
+    problem.display(),
+    tried.join(", ")
+)]
+pub struct NoDomainFile {
+    pub problem: PathBuf,
+    /// The candidates' file names, in the order tried.
+    pub tried: Vec<String>,
+}
+
+/// The domain file of `problem`: the first of [`domain_file_candidates`] that `exists`
+/// says is a file (the caller looks; the crate does no I/O).
+pub fn find_domain_file(
+    problem: &Path,
+    exists: impl Fn(&Path) -> bool,
+) -> Result<PathBuf, NoDomainFile> {
+    let candidates = domain_file_candidates(problem);
+    if let Some(found) = candidates.iter().find(|p| exists(p)) {
+        return Ok(found.clone());
+    }
+    Err(NoDomainFile {
+        problem: problem.to_path_buf(),
+        tried: (candidates.iter().filter_map(|c| c.file_name()))
+            .map(|n| n.to_string_lossy().into_owned())
+            .collect(),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -48,5 +80,13 @@ mod tests {
             domain_file_candidates(Path::new("task"))[1],
             Path::new("task-domain")
         );
+        let beside = |p: &Path| p == Path::new("ipc/p01-domain.pddl");
+        let found = find_domain_file(Path::new("ipc/p01.pddl"), beside);
+        assert_eq!(found, Ok(Path::new("ipc/p01-domain.pddl").to_path_buf()));
+        let missing = find_domain_file(Path::new("ipc/p01.pddl"), |_| false).unwrap_err();
+        assert_eq!(missing.tried[..2], ["domain.pddl", "p01-domain.pddl"]);
+        assert!(missing
+            .to_string()
+            .contains("of ipc/p01.pddl using the naming rules"));
     }
 }

@@ -37,7 +37,7 @@ mod writer;
 pub use ast::*;
 pub use canonical::{canonical_form, Canonical};
 pub use error::{ErrorKind, PddlError};
-pub use files::domain_file_candidates;
+pub use files::{domain_file_candidates, find_domain_file, NoDomainFile};
 pub use parser::PddlFile;
 pub use plan::{parse_plan, write_plan, CostKind, Plan, PlanError, PlanErrorKind, Step};
 pub use span::Span;

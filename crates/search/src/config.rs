@@ -82,24 +82,6 @@ impl HeuristicName {
     }
 }
 
-/// Fast Downward's aliases that demoplan knows: name and search string.
-pub const ALIASES: &[(&str, &str)] = &[("seq-opt-lmcut", "astar(lmcut())")];
-
-/// The search string for a Fast Downward alias (`seq-opt-lmcut`); an unknown one is an
-/// error that lists the known ones.
-pub fn alias(name: &str) -> Result<&'static str, UnknownAlias> {
-    ALIASES
-        .iter()
-        .find(|(alias, _)| *alias == name)
-        .map(|&(_, search)| search)
-        .ok_or_else(|| UnknownAlias(name.to_string()))
-}
-
-/// An alias that is not in [`ALIASES`].
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown alias `{0}`; known aliases: {known}", known = ALIASES.iter().map(|(name, _)| *name).collect::<Vec<_>>().join(", "))]
-pub struct UnknownAlias(pub String);
-
 /// A parsed search string.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct SearchConfig {
@@ -1557,21 +1539,6 @@ mod tests {
         assert_eq!(ok("astar( eval = hmax() )"), hmax);
         assert_eq!(blind.to_string(), "astar(blind())");
         assert_eq!(ok(&hmax.to_string()), hmax);
-    }
-
-    #[test]
-    fn aliases() {
-        assert_eq!(alias("seq-opt-lmcut"), Ok("astar(lmcut())"));
-        assert_eq!(
-            alias("seq-opt-blind").map_err(|e| e.to_string()),
-            Err("unknown alias `seq-opt-blind`; known aliases: seq-opt-lmcut".to_string())
-        );
-        // Every alias parses.
-        for (_, search) in ALIASES {
-            if let Err(e) = parse_search(search) {
-                panic!("{search}: {e}");
-            }
-        }
     }
 
     #[test]

@@ -3,6 +3,7 @@
 use task::{Fact, Task};
 
 use crate::cpdbs::PdbStatistics;
+use crate::scp::ScpStatistics;
 
 /// An estimate of the cost from a state to the goal.
 ///
@@ -28,6 +29,12 @@ pub trait Heuristic {
         None
     }
 
+    /// For saturated cost partitioning (`scp`, `scp_online`): what building it did and,
+    /// online, what the search added (orders). `None` for the others.
+    fn scp_statistics(&self) -> Option<&ScpStatistics> {
+        None
+    }
+
     /// What building the heuristic did, as log lines in Fast Downward's (or Scorpion's)
     /// words, one per line without a final newline; printed before the search. `None`
     /// for heuristics that build nothing worth reporting.
@@ -47,6 +54,10 @@ impl<H: Heuristic + ?Sized> Heuristic for Box<H> {
 
     fn pdb_statistics(&self) -> Option<&PdbStatistics> {
         (**self).pdb_statistics()
+    }
+
+    fn scp_statistics(&self) -> Option<&ScpStatistics> {
+        (**self).scp_statistics()
     }
 
     fn construction_log(&self) -> Option<String> {

@@ -20,8 +20,8 @@
 //! - partial-order reduction: [`PruningConfig`] (`pruning=atom_centric_stubborn_sets()`,
 //!   `limited_pruning(...)`) built into a [`Pruning`] that [`astar_with_pruning`] applies
 //!   to each expansion, with what it pruned in [`PruningStatistics`];
-//! - [`parse_search`] and [`alias`]: Fast Downward-style search strings
-//!   (`astar(hmax())`, `seq-opt-lmcut`), and [`search`] to run one;
+//! - [`parse_search`]: Fast Downward-style search strings (`astar(hmax())`), and
+//!   [`search`] to run one (aliases, which add translator options, are `slim`'s);
 //! - [`replay`]: applies a plan to the initial state, checking every step.
 //!
 //! The library never prints and does no I/O; results are values.
@@ -91,8 +91,8 @@ pub use astar::{
     Statistics,
 };
 pub use config::{
-    alias, parse_search, Built, ConfigError, Engine, HeuristicConfig, HeuristicName,
-    PatternCollectionConfig, SearchConfig, UnknownAlias, ALIASES, SEARCH_ENGINES,
+    parse_search, Built, ConfigError, Engine, HeuristicConfig, HeuristicName,
+    PatternCollectionConfig, SearchConfig, SEARCH_ENGINES,
 };
 pub use cpdbs::{CanonicalPdbs, PdbStatistics};
 pub use heuristic::{Blind, Heuristic};

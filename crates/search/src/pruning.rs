@@ -668,31 +668,7 @@ fn min_by_count(items: impl Iterator<Item = u32>, count: impl Fn(u32) -> usize) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::test_tasks::op;
-    use task::{Fact, VarId, Variable};
-
-    fn task(
-        sizes: &[u32],
-        init: &[u32],
-        goal: &[(u32, u32)],
-        operators: Vec<task::Operator>,
-    ) -> Task {
-        Task {
-            variables: sizes
-                .iter()
-                .enumerate()
-                .map(|(i, &s)| Variable {
-                    name: format!("v{i}"),
-                    value_names: (0..s).map(|x| format!("x{x}")).collect(),
-                })
-                .collect(),
-            mutexes: vec![],
-            initial_state: init.to_vec(),
-            goal: goal.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect(),
-            operators,
-            use_costs: false,
-        }
-    }
+    use crate::test_tasks::{op, task};
 
     /// The stubborn operators of `state` among all applicable ones, by name.
     fn kept(task: &Task, config: StubbornSetsConfig, state: &[u32]) -> Vec<String> {

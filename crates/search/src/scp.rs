@@ -1027,6 +1027,10 @@ impl Heuristic for Scp {
         Some(best)
     }
 
+    fn scp_statistics(&self) -> Option<&ScpStatistics> {
+        Some(&self.statistics)
+    }
+
     fn construction_log(&self) -> Option<String> {
         Some(self.statistics.to_string())
     }

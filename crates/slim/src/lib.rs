@@ -7,6 +7,7 @@
 //! out of time. A [`Backend`] plans one task: demoplan's own planner in-process, or an
 //! installed Fast Downward run as a separate program (never linked: it is GPL).
 
+mod config;
 mod exit_code;
 mod fast_downward;
 mod logged;
@@ -15,9 +16,12 @@ mod run;
 
 use std::time::{Duration, Instant};
 
+pub use config::{alias_names, Alias, ConfigError, PlannerConfig, ALIASES};
 pub use exit_code::ExitCode;
 pub use fast_downward::{parse_log, FastDownward, FdLog};
-pub use logged::{plan_logged, LoggedRun, PlanInput, PruningRecord, RunError, StatisticsRecord};
+pub use logged::{
+    plan_logged, LoggedRun, PlanInput, PruningRecord, RunError, ScpRecord, StatisticsRecord,
+};
 pub use printout::{compare_full, level_header, level_row};
 pub use run::{
     plan_task, translate_checked, translate_checked_within, MemoryProbe, Outcome, PlanRun,
@@ -53,24 +57,37 @@ impl PlannerName {
     }
 }
 
+/// `solve --planner`: the planners by [`PlannerName::name`], in [`PlannerName::ALL`]'s
+/// order.
+#[cfg(feature = "clap")]
+impl clap::ValueEnum for PlannerName {
+    fn value_variants<'a>() -> &'a [Self] {
+        &PlannerName::ALL
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}
+
 /// Who plans.
 #[derive(Debug, Clone)]
 pub enum Backend {
-    /// demoplan's planner with this search configuration.
-    Demoplan(search::SearchConfig),
+    /// demoplan's planner with this configuration (search and translator options).
+    Demoplan(PlannerConfig),
     /// Fast Downward with this search string.
     FastDownward(FastDownward, String),
 }
 
 /// Why a [`Backend`] could not be made: a search string that does not parse
-/// ([`ExitCode::SEARCH_INPUT_ERROR`]), or no Fast Downward to run ([`ExitCode::USAGE`]).
+/// ([`ExitCode::SEARCH_INPUT_ERROR`]), an unknown alias or an alias for Fast Downward, or
+/// no Fast Downward to run ([`ExitCode::USAGE`]).
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum BackendError {
-    #[error("--search {search}: {error}")]
-    Search {
-        search: String,
-        error: search::ConfigError,
-    },
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    #[error("--alias names a configuration of demoplan's planner; give Fast Downward a --search")]
+    AliasForFastDownward,
     #[error("{0}")]
     NoFastDownward(String),
 }
@@ -79,32 +96,38 @@ impl BackendError {
     /// The exit code of a command that stops here.
     pub fn exit_code(&self) -> ExitCode {
         match self {
-            BackendError::Search { .. } => ExitCode::SEARCH_INPUT_ERROR,
-            BackendError::NoFastDownward(_) => ExitCode::USAGE,
+            BackendError::Config(e) => e.exit_code(),
+            BackendError::AliasForFastDownward | BackendError::NoFastDownward(_) => ExitCode::USAGE,
         }
     }
 }
 
 impl Backend {
-    /// The backend `planner` names, with its search string (Fast Downward's syntax; for
-    /// demoplan, parsed now) and, for Fast Downward, its driver ([`FastDownward::locate`]).
+    /// The backend `planner` names, with its search string (Fast Downward's syntax) or,
+    /// for demoplan, an alias ([`PlannerConfig::resolve`], parsed now), and for Fast
+    /// Downward its driver ([`FastDownward::locate`]).
     pub fn new(
         planner: PlannerName,
-        search: &str,
+        search: Option<&str>,
+        alias: Option<&str>,
         fd: Option<&std::path::Path>,
     ) -> Result<Backend, BackendError> {
         match planner {
-            PlannerName::Demoplan => {
-                search::parse_search(search)
-                    .map(Backend::Demoplan)
-                    .map_err(|error| BackendError::Search {
-                        search: search.to_string(),
-                        error,
-                    })
+            PlannerName::Demoplan => Ok(Backend::Demoplan(PlannerConfig::resolve(
+                search,
+                alias,
+                translate::TranslateOptions::default(),
+            )?)),
+            PlannerName::FastDownward => {
+                let search = match (search, alias) {
+                    (_, Some(_)) => return Err(BackendError::AliasForFastDownward),
+                    (Some(search), None) => search,
+                    (None, None) => return Err(ConfigError::Missing.into()),
+                };
+                FastDownward::locate(fd)
+                    .map(|driver| Backend::FastDownward(driver, search.to_string()))
+                    .map_err(BackendError::NoFastDownward)
             }
-            PlannerName::FastDownward => FastDownward::locate(fd)
-                .map(|driver| Backend::FastDownward(driver, search.to_string()))
-                .map_err(BackendError::NoFastDownward),
         }
     }
 
@@ -126,9 +149,10 @@ impl Backend {
                     (probe.reset)();
                 }
                 let within = limits.starting_at(start);
-                let mut run = match translate_checked_within(domain, problem, &within) {
+                let options = &config.translator;
+                let mut run = match translate_checked_within(domain, problem, options, &within) {
                     Translated::Task(task, translate_time) => {
-                        let mut run = plan_task(&task, config, &within);
+                        let mut run = plan_task(&task, &config.search, &within);
                         run.translate_time = translate_time;
                         run.total_time = start.elapsed();
                         run
@@ -242,15 +266,34 @@ mod tests {
 
     #[test]
     fn a_backend_parses_demoplan_searches_and_needs_a_fast_downward() {
-        let backend = Backend::new(PlannerName::Demoplan, "astar(lmcut())", None);
+        let backend = Backend::new(PlannerName::Demoplan, Some("astar(lmcut())"), None, None);
         assert!(matches!(backend, Ok(Backend::Demoplan(_))), "{backend:?}");
-        let e = Backend::new(PlannerName::Demoplan, "astar(nope())", None).unwrap_err();
+        let e = Backend::new(PlannerName::Demoplan, Some("astar(nope())"), None, None);
+        let e = e.unwrap_err();
         assert_eq!(e.exit_code(), ExitCode::SEARCH_INPUT_ERROR);
-        assert!(e.to_string().starts_with("--search astar(nope()): "), "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("--search: unknown heuristic `nope`"),
+            "{e}"
+        );
         let missing = std::path::Path::new("/nonexistent/fast-downward.py");
-        let e = Backend::new(PlannerName::FastDownward, "astar(lmcut())", Some(missing));
+        let search = Some("astar(lmcut())");
+        let e = Backend::new(PlannerName::FastDownward, search, None, Some(missing));
         assert!(matches!(&e, Err(BackendError::NoFastDownward(_))), "{e:?}");
         assert_eq!(e.unwrap_err().exit_code(), ExitCode::USAGE);
+    }
+
+    #[test]
+    fn an_alias_gives_demoplan_its_translator_options_and_fast_downward_an_error() {
+        let opt = Backend::new(PlannerName::Demoplan, None, Some("demoplan-opt"), None);
+        let Ok(Backend::Demoplan(config)) = opt else {
+            panic!("{opt:?}")
+        };
+        assert_eq!(config, crate::PlannerConfig::alias("demoplan-opt").unwrap());
+        let fd = Backend::new(PlannerName::FastDownward, None, Some("demoplan-opt"), None);
+        assert_eq!(fd.unwrap_err(), BackendError::AliasForFastDownward);
+        let e = Backend::new(PlannerName::Demoplan, None, Some("nope"), None).unwrap_err();
+        assert_eq!(e.exit_code(), ExitCode::USAGE);
     }
 
     #[test]

@@ -54,6 +54,9 @@ pub struct LoggedRun {
     /// The translation's statistics (its options among them); `None` for a task given
     /// as it is.
     pub translator: Option<translate::TranslateStats>,
+    /// What saturated cost partitioning built (and, online, added during the search);
+    /// `None` for other heuristics and for runs that ended before a search.
+    pub scp: Option<search::ScpStatistics>,
 }
 
 /// Plans `input` with `config` under `limits`, every time measured from `start` (the
@@ -200,6 +203,7 @@ fn plan_logged_with(
         statistics: Some(statistics),
         sizes: Some(task.sizes()),
         translator: None,
+        scp: heuristic.scp_statistics().cloned(),
     })
 }
 
@@ -228,6 +232,7 @@ fn ended_before_search(outcome: Outcome, translate_time: Duration, start: Instan
         statistics: None,
         sizes: None,
         translator: None,
+        scp: None,
     }
 }
 
@@ -329,6 +334,7 @@ impl LoggedRun {
             plan_length: self.run.cost.map(|_| self.run.plan.len()),
             registered_states: s.map(|s| s.registered_states),
             reopened: s.map(|s| s.reopened),
+            scp: self.scp.as_ref().map(ScpRecord::from),
             search_time_s: s.map(|s| seconds(s.search_time)),
             total_time_s: seconds(self.run.total_time),
             translate_time_s: seconds(self.run.translate_time),
@@ -372,6 +378,8 @@ pub struct StatisticsRecord {
     pub registered_states: Option<u64>,
     /// States reopened.
     pub reopened: Option<u64>,
+    /// What saturated cost partitioning built; `null` for other heuristics.
+    pub scp: Option<ScpRecord>,
     /// The search's time in seconds.
     pub search_time_s: Option<f64>,
     /// The whole run in seconds.
@@ -382,6 +390,44 @@ pub struct StatisticsRecord {
     pub translator: Option<TranslatorRecord>,
     /// Variables of the searched task.
     pub variables: Option<usize>,
+}
+
+/// What `scp()` and `scp_online()` built, in `--stats-json`: the counts their log lines
+/// (`Number of abstractions`, `Orders computed`, `Orders stored`, ...) give; for
+/// `scp_online` the orders include those the search added.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ScpRecord {
+    /// Abstract states over all projections.
+    pub abstract_states: u64,
+    /// Abstract transitions over all projections.
+    pub abstract_transitions: u64,
+    /// Projections, after deduplication (`Number of abstractions`).
+    pub abstractions: usize,
+    /// Seconds to generate the patterns and build the projections.
+    pub abstractions_time_s: f64,
+    /// Seconds to build the whole heuristic.
+    pub construction_time_s: f64,
+    /// Orders kept (`Orders stored`).
+    pub orders: usize,
+    /// Orders computed, kept or not.
+    pub orders_computed: u64,
+    /// Patterns `sys_scp` kept.
+    pub sys_scp_patterns: usize,
+}
+
+impl From<&search::ScpStatistics> for ScpRecord {
+    fn from(s: &search::ScpStatistics) -> ScpRecord {
+        ScpRecord {
+            abstract_states: s.total_size,
+            abstract_transitions: s.total_transitions,
+            abstractions: s.projections,
+            abstractions_time_s: s.abstraction_time.as_secs_f64(),
+            construction_time_s: s.total_time.as_secs_f64(),
+            orders: s.orders,
+            orders_computed: s.orders_computed,
+            sys_scp_patterns: s.sys_scp_patterns,
+        }
+    }
 }
 
 /// The translator's options (`--h2-mutexes`, `--remove-dominated-operators`) and what

@@ -262,14 +262,16 @@ pub enum Translated {
 
 /// Checks and translates a domain and problem.
 pub fn translate_checked(domain: &pddl::Domain, problem: &pddl::Problem) -> Translated {
-    translate_checked_within(domain, problem, &task::Limits::default())
+    let options = translate::TranslateOptions::default();
+    translate_checked_within(domain, problem, &options, &task::Limits::default())
 }
 
-/// Like [`translate_checked`], stopping at the run's `limits` (then the run is done
-/// with [`Outcome::TimeLimit`] or [`Outcome::MemoryLimit`]).
+/// Like [`translate_checked`], with the translator's `options` and stopping at the run's
+/// `limits` (then the run is done with [`Outcome::TimeLimit`] or [`Outcome::MemoryLimit`]).
 pub fn translate_checked_within(
     domain: &pddl::Domain,
     problem: &pddl::Problem,
+    options: &translate::TranslateOptions,
     limits: &task::Limits,
 ) -> Translated {
     let start = Instant::now();
@@ -283,7 +285,7 @@ pub fn translate_checked_within(
             "problem does not fit the domain: {e}"
         )));
     }
-    match translate::translate_within(domain, problem, limits) {
+    match translate::translate_with_options(domain, problem, limits, options) {
         Ok(translate::Translation::Task(t)) => Translated::Task(Box::new(t.task), start.elapsed()),
         Ok(translate::Translation::Unsolvable { .. }) => {
             done(PlanRun::ended(Outcome::RelaxedUnreachable))

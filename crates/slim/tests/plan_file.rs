@@ -32,7 +32,7 @@ fn check(costs: Option<[u64; 2]>, expect_text: &str) {
          (:init (at a) (road-to a b) (road-to b c) {init_costs}) (:goal (at c)) {metric})"
     ))
     .unwrap();
-    let backend = Backend::Demoplan(search::parse_search("astar(blind())").unwrap());
+    let backend = Backend::Demoplan(search::parse_search("astar(blind())").unwrap().into());
     let run = backend.plan(&domain, &problem, &slim::RunLimits::default());
     assert_eq!(run.outcome, Outcome::Solved);
     assert_eq!(run.plan_text().as_deref(), Some(expect_text));

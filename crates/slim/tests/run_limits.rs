@@ -21,7 +21,7 @@ fn goal_problem() -> pddl::Problem {
 }
 
 fn lmcut() -> Backend {
-    Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap())
+    Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap().into())
 }
 
 /// Algorithm 1 with LM-cut on the widening library and the paper's goal 1, under `limits`.

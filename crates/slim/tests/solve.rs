@@ -15,7 +15,7 @@ use common::widening_library as fixture;
 /// Algorithm 1 on the widening library for `problem`, with LM-cut and a minute per
 /// level, each level's run handed to `seen`.
 fn widen(problem: &pddl::Problem, seen: impl FnMut(&LevelResult)) -> Solved {
-    let backend = Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap());
+    let backend = Backend::Demoplan(search::parse_search("astar(lmcut())").unwrap().into());
     let limits = RunLimits::time(Duration::from_secs(60));
     solve(
         &fixture(),

@@ -1,9 +1,10 @@
 //! Tasks and an oracle for tests, shared by the test suites of every crate that works
 //! on finite-domain tasks (search's heuristics and pruning, translate's h² and
 //! dominated operators): random valid tasks for property tests, `op`, an operator
-//! written briefly, and [`optimal_cost`], uniform-cost search over the explicit state
-//! space, the slow, obviously correct oracle of optimal cost. Behind the `testing`
-//! feature, which only dev-dependencies enable: nothing of it is in a binary.
+//! written briefly, [`task`], a task written briefly, and [`optimal_cost`], uniform-cost
+//! search over the explicit state space, the slow, obviously correct oracle of optimal
+//! cost. Behind the `testing` feature, which only dev-dependencies enable: nothing of it
+//! is in a binary.
 
 use std::cmp::Reverse;
 use std::collections::{BinaryHeap, HashMap};
@@ -19,6 +20,27 @@ pub fn op(name: &str, pre: &[(u32, u32)], eff: &[(u32, u32)], cost: u64) -> Oper
         preconditions: facts(pre),
         effects: facts(eff),
         cost,
+    }
+}
+
+/// A task over variables of these domain sizes (variable `i` is named `var{i}`, its
+/// values `v{i}-{x}`), from its initial state, its goal as `(variable, value)` pairs and
+/// its operators; with action costs. Not validated: tests of invalid input use it too.
+pub fn task(sizes: &[u32], init: &[u32], goal: &[(u32, u32)], operators: Vec<Operator>) -> Task {
+    Task {
+        variables: sizes
+            .iter()
+            .enumerate()
+            .map(|(i, &s)| Variable {
+                name: format!("var{i}"),
+                value_names: (0..s).map(|x| format!("v{i}-{x}")).collect(),
+            })
+            .collect(),
+        mutexes: vec![],
+        initial_state: init.to_vec(),
+        goal: goal.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect(),
+        operators,
+        use_costs: true,
     }
 }
 
@@ -95,30 +117,19 @@ pub fn tasks() -> impl Strategy<Value = Task> {
         )
             .prop_map(
                 |(sizes, ops, initial_state, goal, use_costs, (walk, seed, steps))| {
-                    let mut task = Task {
-                        variables: sizes
-                            .iter()
-                            .enumerate()
-                            .map(|(i, &s)| Variable {
-                                name: format!("var{i}"),
-                                value_names: (0..s).map(|v| format!("v{v}")).collect(),
-                            })
-                            .collect(),
-                        mutexes: vec![],
-                        initial_state,
-                        goal,
-                        operators: ops
-                            .into_iter()
-                            .enumerate()
-                            .map(|(i, (preconditions, effects, cost))| Operator {
-                                name: format!("op{i}"),
-                                preconditions,
-                                effects,
-                                cost,
-                            })
-                            .collect(),
-                        use_costs,
-                    };
+                    let operators = ops
+                        .into_iter()
+                        .enumerate()
+                        .map(|(i, (preconditions, effects, cost))| Operator {
+                            name: format!("op{i}"),
+                            preconditions,
+                            effects,
+                            cost,
+                        })
+                        .collect();
+                    let mut task = task(&sizes, &initial_state, &[], operators);
+                    task.goal = goal;
+                    task.use_costs = use_costs;
                     if walk {
                         if let Some(goal) = random_walk_goal(&task, seed, steps) {
                             task.goal = goal;

@@ -436,26 +436,7 @@ fn prune(task: &mut Task, facts: &Facts, h2: &Reachability) -> H2Stats {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use task::testing::op;
-    use task::{Operator, Variable};
-
-    fn task(sizes: &[u32], init: &[u32], goal: &[(u32, u32)], operators: Vec<Operator>) -> Task {
-        Task {
-            variables: sizes
-                .iter()
-                .enumerate()
-                .map(|(i, &s)| Variable {
-                    name: format!("var{i}"),
-                    value_names: (0..s).map(|x| format!("v{i}-{x}")).collect(),
-                })
-                .collect(),
-            mutexes: vec![],
-            initial_state: init.to_vec(),
-            goal: goal.iter().map(|&(v, x)| Fact::new(VarId(v), x)).collect(),
-            operators,
-            use_costs: true,
-        }
-    }
+    use task::testing::{op, task};
 
     fn pruned(t: &mut Task) -> H2Stats {
         match h2_mutexes(t, &task::Limits::default()) {

@@ -10,7 +10,7 @@
 use std::path::Path;
 
 use grounding::HandFacts;
-use segment::{Activity, ActivityTree, Confusion, LabelMap, C45};
+use segment::{Activity, ActivityTree, Confusion, LabelMap};
 
 use crate::cli::ClassifyArgs;
 use crate::commands::demo_input;
@@ -67,46 +67,30 @@ fn labelled(
         .map_err(demo_input::file_failure)
 }
 
+/// `--learn` ([`learn::learn_tree`]); the grounding and label map are read only for
+/// labelled frames.
 fn learn(args: &ClassifyArgs) -> Result<ExitCode, Failure> {
-    let learner = C45::default();
-    // A nominal data set that is not a hand-state table: learn it as it is.
-    if let [path] = args.files.as_slice() {
-        if segment::is_arff_file(path) {
-            let mut warn = |w: &segment::ArffWarning| demo_input::warn(path, w);
-            let nominal = learn::nominal_dataset(path, args.class.as_deref(), &mut warn);
-            if let Some(data) = nominal.map_err(demo_input::file_failure)? {
-                return finish(args, &learner.learn_checked(&data));
-            }
-        }
-    }
-    if args.class.is_some() {
-        return Err(Failure::plain(
-            ExitCode::USAGE,
-            "--class is for an ARFF data set that is not a hand-state table; hand-state frames are learned by their activity",
-        ));
-    }
-    let config = demo_input::config(args.config.as_deref())?;
-    let map = demo_input::label_map(args.mapping.as_deref())?;
-    let mut cases: Vec<(HandFacts, Activity)> = Vec::new();
-    let mut hand_state = true;
-    // C4.5 needs every case at once: only these (a hand state and a label each) are
-    // kept, not the files' rows.
-    for path in &args.files {
-        let l = labelled(path, &config, &map, &mut |hand, label| {
-            cases.push((hand, label))
-        })?;
-        hand_state &= l.hand_state;
-    }
-    if cases.is_empty() {
-        return Err(Failure::plain(
-            ExitCode::INPUT_ERROR,
-            "no labelled frames to learn from",
-        ));
-    }
+    let frames = || -> Result<_, Failure> {
+        let config = demo_input::config(args.config.as_deref())?;
+        Ok((config, demo_input::label_map(args.mapping.as_deref())?))
+    };
+    let class = args.class.as_deref();
     finish(
         args,
-        &segment::learn_activity_tree(&learner, &cases, hand_state),
+        &learn::learn_tree(&args.files, class, frames, &mut demo_input::warn)?,
     )
+}
+
+/// Why no tree was learned: a file's failure, a `--class` for hand states (36), no
+/// labelled frames (31).
+impl From<learn::TreeError> for Failure {
+    fn from(e: learn::TreeError) -> Failure {
+        match e {
+            learn::TreeError::File(e) => demo_input::file_failure(e),
+            e @ learn::TreeError::ClassOfHandStates => Failure::plain(ExitCode::USAGE, e),
+            e @ learn::TreeError::NoFrames => Failure::plain(ExitCode::INPUT_ERROR, e),
+        }
+    }
 }
 
 fn finish(args: &ClassifyArgs, learned: &segment::LearnedTree) -> Result<ExitCode, Failure> {

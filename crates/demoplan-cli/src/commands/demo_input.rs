@@ -84,15 +84,7 @@ pub fn label_map(path: Option<&Path>) -> Result<LabelMap, Failure> {
     .map_err(|e| {
         // The mapping keeps no positions: find the label's value in the file again.
         let text = std::fs::read_to_string(path).unwrap_or_default();
-        let (line, column) = import::Mapping::label_position(&text, &e.label).unwrap_or((0, 0));
-        let field = format!("labels.{}", e.label);
-        let message = e.to_string();
-        let e = recording::TextError {
-            line,
-            column,
-            field,
-            message,
-        };
+        let e = import::Mapping::label_error(&text, &e.label, e.to_string());
         text_failure(path, &text, "import::mapping", &e)
     })
 }
@@ -126,39 +118,16 @@ pub fn warn(path: &Path, warning: &segment::ArffWarning) {
     );
 }
 
-/// The failure for a demonstration file that could not be read ([`learn::FileError`]).
+/// The failure for a demonstration file that could not be read ([`learn::FileError`]):
+/// a file that cannot be read, or a missing ground truth, is a command line error (36).
 pub fn file_failure(e: learn::FileError) -> Failure {
     use learn::FileError as E;
     match e {
-        E::Read { path, source } => Failure::plain(
-            ExitCode::USAGE,
-            format!("cannot read {}: {source}", path.display()),
-        ),
         E::Arff { path, error } => arff_failure(&path, &error),
         E::Open { path, error } => recording_input::open_failure(&path, error),
         E::Recording { path, error } => recording_input::recording_failure(&path, &error),
-        E::Truth {
-            truth,
-            recording,
-            line: 0,
-            message,
-        } => Failure::plain(
-            ExitCode::USAGE,
-            format!(
-                "cannot read {} (the ground truth of {}, needed for its labels): {message}",
-                truth.display(),
-                recording.display()
-            ),
-        ),
-        E::Truth {
-            truth,
-            line,
-            message,
-            ..
-        } => Failure::plain(
-            ExitCode::INPUT_ERROR,
-            format!("{}:{line}: {message}", truth.display()),
-        ),
+        e @ E::Truth { line: 1.., .. } => Failure::plain(ExitCode::INPUT_ERROR, e),
+        e @ (E::Read { .. } | E::Truth { .. }) => Failure::plain(ExitCode::USAGE, e),
     }
 }
 

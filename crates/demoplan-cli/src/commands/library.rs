@@ -8,7 +8,7 @@ use learn::{
     Update, UpdateError,
 };
 
-use crate::cli::{ActivitiesArg, DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
+use crate::cli::{DomainArgs, LearnArgs, OperatorsArgs, ProblemArgs};
 use crate::commands::demo_input;
 use crate::diagnostic::Failure;
 use crate::output::write_atomically;
@@ -63,7 +63,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         library: args.library.as_deref(),
         out: &args.out,
         lambda: args.lambda,
-        grouping: args.activities.map(ActivitiesArg::grouping),
+        grouping: args.activities,
         lock_timeout,
     };
     let before = update.read()?;
@@ -115,16 +115,12 @@ pub fn domain(args: DomainArgs) -> Result<ExitCode, Failure> {
         true => DomainChoice::Full,
         false => DomainChoice::Priority(prio),
     };
-    let Some((operators, what)) = chosen_domain(&library, choice, options) else {
-        return Err(Failure::plain(
+    let (operators, what) = chosen_domain(&library, choice, options).map_err(|e| {
+        Failure::plain(
             ExitCode::INPUT_ERROR,
-            format!(
-                "{}: the library has no operator that changes anything; a domain would be \
-                 empty",
-                args.library.display()
-            ),
-        ));
-    };
+            format!("{}: {e}", args.library.display()),
+        )
+    })?;
     write_atomically(&out, &domain_text(&library, &operators, &what))?;
     println!(
         "wrote {} ({what}: {} operators)",
@@ -162,17 +158,8 @@ fn scene(args: &ProblemArgs) -> Result<Scene, Failure> {
 
 pub fn problem(args: ProblemArgs) -> Result<ExitCode, Failure> {
     let scene = scene(&args)?;
-    let tower = match (&args.tower, args.paper_goal) {
-        (Some(list), None) => Ok(Tower::listed(list)),
-        (None, Some(n)) => Tower::paper_goal(n),
-        _ => {
-            return Err(Failure::plain(
-                ExitCode::USAGE,
-                "give the goal with --tower LIST or --paper-goal N",
-            ))
-        }
-    };
-    let text = tower
+    // clap asks for exactly one of --tower and --paper-goal.
+    let text = Tower::chosen(args.tower.as_deref(), args.paper_goal)
         .and_then(|t| Ok((t.problem_text(&scene)?, t.name)))
         .map_err(|e| {
             let message = match &e {

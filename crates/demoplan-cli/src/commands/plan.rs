@@ -12,17 +12,6 @@ use slim::ExitCode;
 use task::memory;
 use task::units::{parse_memory_limit, parse_time_limit};
 
-/// `--memory-limit` of `solve`, `reproduce`, `study` (`experiment::grid::memory_limit`:
-/// `auto` is shared by the runs at once, or fixed on a grid written for Slurm).
-pub fn parse_run_memory_limit(
-    text: &str,
-    runs_at_once: usize,
-    slurm: bool,
-) -> Result<Option<u64>, Failure> {
-    experiment::grid::memory_limit(text, runs_at_once, slurm)
-        .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--memory-limit: {e}")))
-}
-
 fn is_sas_file(path: &Path) -> bool {
     path.extension().is_some_and(|e| e == "sas")
 }
@@ -44,13 +33,9 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
         .transpose()
         .map_err(usage)?
         .flatten();
-    let search_string = match (&args.search, &args.alias) {
-        (Some(s), _) => s.as_str(),
-        (None, Some(a)) => search::alias(a).map_err(|e| usage(e.to_string()))?,
-        (None, None) => return Err(usage("give a search with --search or --alias".into())),
-    };
-    let config = search::parse_search(search_string)
-        .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, format!("--search: {e}")))?;
+    let (search, alias) = (args.search.as_deref(), args.alias.as_deref());
+    let config = slim::PlannerConfig::resolve(search, alias, args.translator)
+        .map_err(|e| Failure::plain(e.exit_code(), e.to_string()))?;
     // Like Fast Downward, never leave an old plan behind that could be mistaken for this
     // run's.
     if args.plan_file.exists() {
@@ -80,10 +65,13 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
                     format!("{}: {what}", single.display()),
                 ));
             }
+            if config.translator != translate::TranslateOptions::default() {
+                log("Translator options of the alias not applied: the task is translated");
+            }
             let task = read_sas(single)?;
             let logged = slim::plan_logged(
                 slim::PlanInput::Task(&task),
-                &config,
+                &config.search,
                 &limits,
                 start,
                 &mut log,
@@ -96,9 +84,9 @@ pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
             let input = slim::PlanInput::Pddl {
                 domain: &parsed.domain,
                 problem: &parsed.problem,
-                options: args.translator,
+                options: config.translator,
             };
-            let logged = slim::plan_logged(input, &config, &limits, start, &mut log);
+            let logged = slim::plan_logged(input, &config.search, &limits, start, &mut log);
             (
                 logged,
                 problem_path.clone(),

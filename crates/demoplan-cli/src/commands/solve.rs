@@ -7,6 +7,7 @@ use slim::Backend;
 
 use crate::cli::SolveArgs;
 use crate::commands::library::read_library;
+use crate::commands::reproduce::experiment_failure;
 use crate::diagnostic::Failure;
 use crate::input;
 use crate::output::write_atomically;
@@ -18,21 +19,16 @@ fn read_problem(path: &Path) -> Result<pddl::Problem, Failure> {
 }
 
 pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
-    let time_limit = match &args.limits.time_limit {
-        Some(text) => task::units::parse_time_limit(text)
-            .map_err(|e| Failure::plain(ExitCode::USAGE, format!("--time-limit: {e}")))?,
-        None => None,
-    };
-    let memory_limit =
-        crate::commands::plan::parse_run_memory_limit(&args.limits.memory_limit, 1, false)?;
     let limits = slim::RunLimits {
-        time: time_limit,
-        memory_bytes: memory_limit,
+        time: args.limits.time().map_err(experiment_failure)?,
+        memory_bytes: args.limits.memory(1, false).map_err(experiment_failure)?,
         memory: Some(slim::MemoryProbe::counting()),
     };
     let library = read_library(&args.library)?;
     let problem = read_problem(&args.problem)?;
-    let backend = Backend::new(args.planner, &args.search, args.fd.as_deref())
+    let (alias, fd) = (args.alias.as_deref(), args.fd.as_deref());
+    let search = Some(args.search.as_str()).filter(|_| alias.is_none());
+    let backend = Backend::new(args.planner, search, alias, fd)
         .map_err(|e| Failure::plain(e.exit_code(), e))?;
     let options = DomainOptions {
         keep_without_effects: args.keep_without_effects,

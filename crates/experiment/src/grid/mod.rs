@@ -14,6 +14,7 @@
 mod children;
 pub mod properties;
 mod relaunch;
+mod settings;
 pub mod slurm;
 
 use std::path::{Path, PathBuf};
@@ -21,6 +22,10 @@ use std::time::Instant;
 
 pub use children::CellCommand;
 pub use relaunch::{cell_or_list, jobs, memory_limit, Relaunch};
+pub(crate) use settings::named_option;
+pub use settings::{
+    FastDownwardArgs, GridArgs, GridExperiment, GridSettings, RunLimitArgs, SlurmArgs,
+};
 
 use crate::cell::{Cell, LevelChoice};
 use crate::lab::{Known, Lab};
@@ -208,6 +213,16 @@ pub struct GridRun {
     pub crashed: usize,
     /// Cells computed at once.
     pub jobs: usize,
+}
+
+impl GridRun {
+    /// Plans that failed the execution check.
+    pub fn failed_executions(&self) -> usize {
+        self.records
+            .iter()
+            .filter(|r| r.executed == Some(false))
+            .count()
+    }
 }
 
 /// Runs the grid `cells` into `out`: every cell without a reusable result (all of them

@@ -5,4 +5,4 @@
 
 #![allow(unused_imports)] // each test binary uses its part
 
-pub use task::testing::{op, optimal_cost, tasks};
+pub use task::testing::{op, optimal_cost, task, tasks};

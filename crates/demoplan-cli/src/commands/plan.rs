@@ -16,23 +16,21 @@ fn is_sas_file(path: &Path) -> bool {
     path.extension().is_some_and(|e| e == "sas")
 }
 
+/// A limit option: absent and `infinity` both mean none; a bad one is a usage error.
+fn limit<T>(
+    given: Option<&str>,
+    parse: fn(&str) -> Result<Option<T>, String>,
+) -> Result<Option<T>, Failure> {
+    let parsed = given.map(parse).transpose();
+    Ok(parsed
+        .map_err(|m| Failure::plain(ExitCode::USAGE, m))?
+        .flatten())
+}
+
 pub fn run(args: PlanArgs) -> Result<ExitCode, Failure> {
     let start = Instant::now();
-    let usage = |m: String| Failure::plain(ExitCode::USAGE, m);
-    let time_limit = args
-        .overall_time_limit
-        .as_deref()
-        .map(parse_time_limit)
-        .transpose()
-        .map_err(usage)?
-        .flatten();
-    let memory_limit = args
-        .overall_memory_limit
-        .as_deref()
-        .map(parse_memory_limit)
-        .transpose()
-        .map_err(usage)?
-        .flatten();
+    let time_limit = limit(args.overall_time_limit.as_deref(), parse_time_limit)?;
+    let memory_limit = limit(args.overall_memory_limit.as_deref(), parse_memory_limit)?;
     let (search, alias) = (args.search.as_deref(), args.alias.as_deref());
     let config = slim::PlannerConfig::resolve(search, alias, args.translator)
         .map_err(|e| Failure::plain(e.exit_code(), e.to_string()))?;

@@ -10,7 +10,8 @@
 //!    Downward's bucket queue does); in later rounds an operator whose supporter got
 //!    cheaper keeps its supporter while that is still of highest cost, else takes the
 //!    first of highest cost in the operator's tie-breaking order (`tie_breaking_order`);
-//!    it keeps the supporter it has now (see `SupporterRule`). If `h^max(G) = 0`, stop.
+//!    it keeps the supporter it has now (see `SupporterRule`), the operators of a fact
+//!    visited in operator order as Fast Downward does. If `h^max(G) = 0`, stop.
 //! 2. The *goal zone*: the facts from which `G` is reached through zero-cost operators,
 //!    following supporters backwards. When a zero-cost operator has several preconditions
 //!    of highest cost, its supporter becomes the first that no zero-cost operator achieves
@@ -18,8 +19,9 @@
 //!    do), which keeps the zone, and the cuts, small.
 //! 3. The *cut*: the operators whose supporter is reached from the state without entering
 //!    the goal zone (following supporters forwards; the other effects of an operator that
-//!    enters the goal zone are not reached) and that have an effect in the goal zone. It is a disjunctive action landmark; its cheapest cost `m` is added to `h` and
-//!    subtracted from the cost of every operator in it.
+//!    enters the goal zone are not reached) and that have an effect in the goal zone. It is a
+//!    disjunctive action landmark; its cheapest cost `m` is added to `h` and subtracted
+//!    from the cost of every operator in it.
 //!
 //! The sum is admissible (the cuts are landmarks with costs partitioned among them), not
 //! necessarily consistent, and never below h^max. Step 1 after the first round is
@@ -109,6 +111,8 @@ struct RelaxedFact {
     /// `RelaxedOp::supported_next`), so the explorations visit only those operators
     /// instead of every operator the fact is a precondition of.
     supported: u32,
+    /// Last of them. The list is in operator order (see [`link`]).
+    supported_last: u32,
 }
 
 /// The LM-cut heuristic; see the module documentation.
@@ -139,6 +143,10 @@ pub struct LmCut {
     /// The cut: `cut[..cut_len]`, one place per operator.
     cut: Vec<u32>,
     cut_len: usize,
+    /// The values of the cut's operators, computed before any is relaxed.
+    cut_values: Vec<u64>,
+    /// The lists of supported operators that may be out of operator order.
+    unsorted: Unsorted,
 }
 
 /// `values[start[k]..start[k + 1]]` lists, by counting sort of `(key, value)` pairs.
@@ -193,18 +201,63 @@ pub fn tie_breaking_order<'a>(
     order.into_iter().map(|(_, _, f)| f)
 }
 
-/// Makes `fact` the supporter of operator `o`, at the head of `fact`'s list.
+/// Makes `fact` the supporter of operator `o`, at the end of `fact`'s list; returns false
+/// if that put the list out of operator order.
+///
+/// Fast Downward visits the operators a fact supports in operator order (its
+/// `precondition_of`, filtered by supporter), in the cut search and in the incremental
+/// update, and that order decides which supporter the update keeps, and so LM-cut's
+/// values. The first exploration links each fact's operators in ascending order, so its
+/// lists are in order; an operator that changes supporter later may not be, and the list
+/// is sorted when it is next visited ([`sort_supported`]). Cheaper than the alternatives
+/// measured: iterating the preconditions' operators as Fast Downward does cost about a
+/// fifth more time per evaluation (logistics, blocks, sokoban), and inserting each
+/// operator in its place half again as much on freecell, whose lists are long.
 #[inline]
-fn link(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
-    let head = facts[fact as usize].supported;
-    if head != NONE {
-        ops[head as usize].supported_prev = o;
+fn link(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) -> bool {
+    let last = facts[fact as usize].supported_last;
+    if last == NONE {
+        facts[fact as usize].supported = o;
+    } else {
+        ops[last as usize].supported_next = o;
     }
+    facts[fact as usize].supported_last = o;
     let op = &mut ops[o as usize];
     op.supporter = fact;
-    op.supported_prev = NONE;
-    op.supported_next = head;
-    facts[fact as usize].supported = o;
+    op.supported_prev = last;
+    op.supported_next = NONE;
+    last == NONE || last < o
+}
+
+/// Puts `fact`'s list of supported operators in operator order, through `scratch`.
+#[cold]
+fn sort_supported(
+    ops: &mut [RelaxedOp],
+    facts: &mut [RelaxedFact],
+    fact: u32,
+    scratch: &mut Vec<u32>,
+) {
+    scratch.clear();
+    let mut next = facts[fact as usize].supported;
+    while next != NONE {
+        scratch.push(next);
+        next = ops[next as usize].supported_next;
+    }
+    scratch.sort_unstable();
+    let mut prev = NONE;
+    for &o in scratch.iter() {
+        ops[o as usize].supported_prev = prev;
+        if prev == NONE {
+            facts[fact as usize].supported = o;
+        } else {
+            ops[prev as usize].supported_next = o;
+        }
+        prev = o;
+    }
+    if prev != NONE {
+        ops[prev as usize].supported_next = NONE;
+    }
+    facts[fact as usize].supported_last = prev;
 }
 
 /// Takes operator `o` out of its supporter's list.
@@ -221,17 +274,70 @@ fn unlink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32) {
     } else {
         ops[prev as usize].supported_next = next;
     }
-    if next != NONE {
+    if next == NONE {
+        facts[supporter as usize].supported_last = prev;
+    } else {
         ops[next as usize].supported_prev = prev;
     }
 }
 
-/// Changes the supporter of operator `o` to `fact`.
+/// Changes the supporter of operator `o` to `fact`, and records in `unsorted` a list that
+/// this put out of operator order.
 #[inline]
-fn relink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
+fn relink(
+    ops: &mut [RelaxedOp],
+    facts: &mut [RelaxedFact],
+    unsorted: &mut Unsorted,
+    o: u32,
+    fact: u32,
+) {
     if ops[o as usize].supporter != fact {
         unlink(ops, facts, o);
-        link(ops, facts, o, fact);
+        if !link(ops, facts, o, fact) {
+            unsorted.mark(fact);
+        }
+    }
+}
+
+/// The facts whose lists of supported operators may be out of operator order.
+#[derive(Debug, Clone, Default)]
+struct Unsorted {
+    /// Per fact.
+    flag: Vec<bool>,
+    /// The facts flagged, in the order flagged (a fact sorted since may still be listed).
+    facts: Vec<u32>,
+    /// Scratch for sorting a list.
+    scratch: Vec<u32>,
+}
+
+impl Unsorted {
+    #[inline]
+    fn mark(&mut self, fact: u32) {
+        if !std::mem::replace(&mut self.flag[fact as usize], true) {
+            self.facts.push(fact);
+        }
+    }
+
+    /// Sorts `fact`'s list if it is flagged.
+    #[inline]
+    fn sort(&mut self, ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], fact: u32) {
+        if std::mem::take(&mut self.flag[fact as usize]) {
+            sort_supported(ops, facts, fact, &mut self.scratch);
+        }
+    }
+
+    /// Sorts every flagged list.
+    fn sort_all(&mut self, ops: &mut [RelaxedOp], facts: &mut [RelaxedFact]) {
+        while let Some(fact) = self.facts.pop() {
+            self.sort(ops, facts, fact);
+        }
+    }
+
+    /// Forgets every flag (the lists were rebuilt).
+    fn clear(&mut self) {
+        while let Some(fact) = self.facts.pop() {
+            self.flag[fact as usize] = false;
+        }
     }
 }
 
@@ -243,6 +349,7 @@ fn relink(ops: &mut [RelaxedOp], facts: &mut [RelaxedFact], o: u32, fact: u32) {
 fn update_operator(
     ops: &mut [RelaxedOp],
     facts: &mut [RelaxedFact],
+    unsorted: &mut Unsorted,
     pre: &[u32],
     eff: &[u32],
     heap: &mut RadixHeap,
@@ -275,7 +382,7 @@ fn update_operator(
     } else {
         first_with_cost(pres, facts, max).unwrap_or(previous)
     };
-    relink(ops, facts, o, supporter);
+    relink(ops, facts, unsorted, o, supporter);
     relax_effects(
         &eff[op.eff_start as usize..op.eff_end as usize],
         op.cost.saturating_add(max),
@@ -362,7 +469,8 @@ impl LmCut {
                     cost: INFINITE,
                     goal_zone: 0,
                     reached: 0,
-                    supported: NONE
+                    supported: NONE,
+                    supported_last: NONE,
                 };
                 num_facts
             ],
@@ -378,6 +486,11 @@ impl LmCut {
             frames: Vec::new(),
             cut: vec![0; num_ops],
             cut_len: 0,
+            cut_values: vec![0; num_ops],
+            unsorted: Unsorted {
+                flag: vec![false; num_facts],
+                ..Unsorted::default()
+            },
         })
     }
 
@@ -399,7 +512,9 @@ impl LmCut {
         for f in facts.iter_mut() {
             f.cost = INFINITE;
             f.supported = NONE;
+            f.supported_last = NONE;
         }
+        self.unsorted.clear();
         for op in ops.iter_mut() {
             op.cost = op.base_cost;
             op.unsatisfied = op.num_pre;
@@ -425,7 +540,8 @@ impl LmCut {
                     // Every precondition is reached at a cost of at most `c`, `f` at `c`:
                     // `f`, the one reached last, is a precondition of highest cost.
                     let op = *op;
-                    link(ops, facts, o, f);
+                    let in_order = link(ops, facts, o, f);
+                    debug_assert!(in_order, "operators are linked in ascending order here");
                     relax_effects(
                         &eff[op.eff_start as usize..op.eff_end as usize],
                         op.cost + c,
@@ -441,7 +557,8 @@ impl LmCut {
     ///
     /// An operator whose supporter got cheaper is updated (`update_operator`), its
     /// supporter chosen by the [`SupporterRule`]. The operators of a fact are updated in
-    /// the order of its list of supported operators, the facts in the order the heap
+    /// operator order (its list of supported operators, sorted first if an earlier change
+    /// of supporter put it out of order: see [`link`]), the facts in the order the heap
     /// hands them out.
     fn second_exploration(&mut self) {
         let round = self.round;
@@ -454,27 +571,40 @@ impl LmCut {
             heap,
             cut,
             cut_len,
+            cut_values,
+            unsorted,
             ..
         } = self;
         heap.clear();
-        // The cut's operators got cheaper. Each is valued by the most expensive of its
-        // preconditions now, not by its supporter alone: relaxing an earlier cut
-        // operator's effects can already have lowered this one's supporter below its other
-        // preconditions (valuing it by the supporter then undercounts h^max, and h with
-        // it).
-        for &o in &cut[..*cut_len] {
-            update_operator(ops, facts, pre, eff, heap, rule, round, o);
+        // The cut's operators got cheaper: each is valued by its supporter, which is its
+        // most expensive precondition until an effect is relaxed, so all are valued before
+        // any effect is (relaxing one cut operator's effects can lower another's
+        // supporter below its other preconditions, and valuing that one by its supporter
+        // then would undercount h^max). Fast Downward queues them the same way.
+        for (&o, value) in cut[..*cut_len].iter().zip(cut_values.iter_mut()) {
+            let op = ops[o as usize];
+            *value = op.cost.saturating_add(facts[op.supporter as usize].cost);
+        }
+        for (&o, &value) in cut[..*cut_len].iter().zip(cut_values.iter()) {
+            let op = ops[o as usize];
+            relax_effects(
+                &eff[op.eff_start as usize..op.eff_end as usize],
+                value,
+                facts,
+                heap,
+            );
         }
         while let Some((c, f)) = heap.pop() {
             if c > facts[f as usize].cost {
                 continue;
             }
             // Only an operator whose most expensive precondition got cheaper changes.
+            unsorted.sort(ops, facts, f);
             let mut next = facts[f as usize].supported;
             while next != NONE {
                 let o = next;
                 next = ops[o as usize].supported_next;
-                update_operator(ops, facts, pre, eff, heap, rule, round, o);
+                update_operator(ops, facts, unsorted, pre, eff, heap, rule, round, o);
             }
         }
     }
@@ -505,7 +635,13 @@ impl LmCut {
                 continue;
             }
             if fact.goal_zone == self.round || self.has_no_zero_cost_achiever(p) {
-                relink(&mut self.ops, &mut self.facts, o as u32, p);
+                relink(
+                    &mut self.ops,
+                    &mut self.facts,
+                    &mut self.unsorted,
+                    o as u32,
+                    p,
+                );
                 return;
             }
         }
@@ -548,6 +684,7 @@ impl LmCut {
     /// otherwise the compiler must assume the call may change the other arrays and
     /// reloads their addresses and lengths from memory at every step.
     fn find_cut(&mut self, state: &[u32]) {
+        self.unsorted.sort_all(&mut self.ops, &mut self.facts);
         let round = self.round;
         let ops = &self.ops[..];
         let facts = &mut self.facts[..];
@@ -556,15 +693,15 @@ impl LmCut {
         let cut = &mut self.cut[..];
         let mut top = 0;
         let mut cut_len = 0;
+        facts[self.fact_i as usize].reached = round;
+        stack[top] = self.fact_i;
+        top += 1;
         for (&offset, &value) in self.fact_offset.iter().zip(state) {
             let f = offset + value;
             facts[f as usize].reached = round;
             stack[top] = f;
             top += 1;
         }
-        facts[self.fact_i as usize].reached = round;
-        stack[top] = self.fact_i;
-        top += 1;
         while top > 0 {
             top -= 1;
             let f = stack[top];
@@ -703,6 +840,85 @@ mod tests {
             name: "v".into(),
             value_names: values.iter().map(|s| s.to_string()).collect(),
         }
+    }
+
+    /// The operators a fact supports, front to back, and back to front through the
+    /// `supported_prev` links.
+    fn supported_list(lmcut: &LmCut, fact: u32) -> Vec<u32> {
+        let mut forwards = vec![];
+        let mut next = lmcut.facts[fact as usize].supported;
+        while next != NONE {
+            forwards.push(next);
+            next = lmcut.ops[next as usize].supported_next;
+        }
+        let mut backwards = vec![];
+        let mut prev = lmcut.facts[fact as usize].supported_last;
+        while prev != NONE {
+            backwards.insert(0, prev);
+            prev = lmcut.ops[prev as usize].supported_prev;
+        }
+        assert_eq!(
+            forwards, backwards,
+            "the two directions of the list disagree"
+        );
+        forwards
+    }
+
+    /// Fast Downward visits the operators a fact supports in operator order: the first
+    /// exploration builds the lists in that order, an operator that changes supporter
+    /// joins at the end and flags the list if that breaks the order, and sorting the
+    /// flagged lists (before every visit) restores it, whichever operator moved.
+    #[test]
+    fn supported_lists_are_visited_in_operator_order() {
+        let f = |v: u32, x: u32| Fact::new(VarId(v), x);
+        let op = |name: &str, effect: Fact| Operator {
+            name: name.into(),
+            preconditions: vec![f(0, 0)],
+            effects: vec![effect],
+            cost: 1,
+        };
+        let task = Task {
+            variables: (0..4).map(|_| variable(&["a", "b"])).collect(),
+            mutexes: vec![],
+            initial_state: vec![0; 4],
+            goal: vec![f(1, 1), f(2, 1), f(3, 1)],
+            operators: vec![op("o0", f(1, 1)), op("o1", f(2, 1)), op("o2", f(3, 1))],
+            use_costs: false,
+        };
+        let mut lmcut = LmCut::new(&task).unwrap();
+        lmcut.first_exploration(&task.initial_state);
+        let supporter = lmcut.fact_offset[0];
+        let elsewhere = lmcut.fact_i;
+        assert_eq!(supported_list(&lmcut, supporter), vec![0, 1, 2]);
+        assert!(lmcut.unsorted.facts.is_empty());
+        let relink = |lmcut: &mut LmCut, o: u32, fact: u32| {
+            relink(
+                &mut lmcut.ops,
+                &mut lmcut.facts,
+                &mut lmcut.unsorted,
+                o,
+                fact,
+            );
+        };
+        for o in [0, 1, 2] {
+            relink(&mut lmcut, o, elsewhere);
+            let rest: Vec<u32> = [0, 1, 2].into_iter().filter(|&x| x != o).collect();
+            assert_eq!(supported_list(&lmcut, supporter), rest);
+            assert_eq!(supported_list(&lmcut, elsewhere), vec![o]);
+            relink(&mut lmcut, o, supporter);
+            // At the end: in order only if it is the last operator.
+            assert_eq!(lmcut.unsorted.flag[supporter as usize], o != 2);
+            lmcut.unsorted.sort_all(&mut lmcut.ops, &mut lmcut.facts);
+            assert_eq!(supported_list(&lmcut, supporter), vec![0, 1, 2]);
+            assert_eq!(supported_list(&lmcut, elsewhere), vec![]);
+        }
+        for o in [2, 0, 1] {
+            relink(&mut lmcut, o, elsewhere);
+        }
+        assert_eq!(supported_list(&lmcut, elsewhere), vec![2, 0, 1]);
+        lmcut.unsorted.sort_all(&mut lmcut.ops, &mut lmcut.facts);
+        assert_eq!(supported_list(&lmcut, elsewhere), vec![0, 1, 2]);
+        assert_eq!(supported_list(&lmcut, supporter), vec![]);
     }
 
     #[test]

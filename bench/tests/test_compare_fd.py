@@ -205,5 +205,41 @@ class CompareFdGrid(unittest.TestCase):
             self.assertIn("plan does not validate", p["unexplained_errors"][0])
 
 
+    def test_plans_of_reused_cells_solved_without_a_validator_are_validated(self):
+        # A grid resumed over sessions: cells that ran while no demoplan binary existed
+        # carry no verdict on their plans (as the coverage grid's did, 2026-12-06).
+        first = self.grid(env={"FAKE_PEER_WRONG": "1"})
+        self.assertEqual(first.returncode, 1, first.stdout + first.stderr)
+        records = sorted(self.out.glob("runs-*/*/record.json"))
+        self.assertEqual(len(records), 6)
+        solved = []
+        for path in records:
+            row = json.loads(path.read_text())
+            if row["outcome"] == "solved":
+                row.update(plan_valid="", cost_check="ok", note="not validated (demoplan not built)")
+                path.write_text(json.dumps(row) + "\n")
+                solved.append(path)
+        # demoplan's two, and each peer's wrong plan for reach-c (the fake times out on reach-d).
+        self.assertEqual(len(solved), 4)
+        again = self.grid()
+        self.assertIn("6 reused", again.stderr)
+        self.assertIn("validated the plans of 4 reused cells", again.stderr)
+        # The peers' wrong plans are caught now, and the grid fails as on a fresh run.
+        self.assertEqual(again.returncode, 1, again.stdout + again.stderr)
+        by_algorithm = {}
+        for p in self.properties().values():
+            by_algorithm.setdefault(p["algorithm"], []).append(p)
+        for p in by_algorithm["demoplan-astar(lmcut())"]:
+            self.assertEqual((p["plan_valid"], p["cost_check"]), ("yes", "ok"), p)
+        for algorithm in ("fd-astar(lmcut())", "symk-sym_bd()"):
+            (p,) = [p for p in by_algorithm[algorithm] if p["problem"] == "reach-c"]
+            self.assertEqual((p["plan_valid"], p["cost_check"]), ("no", "mismatch"), p)
+            self.assertIn("plan does not validate", p["unexplained_errors"][0])
+        # The cells' own records say so too, so the next resume does not validate again.
+        for path in solved:
+            self.assertIn(json.loads(path.read_text())["plan_valid"], ("yes", "no"))
+        self.assertNotIn("validated the plans", self.grid().stderr)
+
+
 if __name__ == "__main__":
     unittest.main()

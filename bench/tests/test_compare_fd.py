@@ -204,7 +204,6 @@ class CompareFdGrid(unittest.TestCase):
             self.assertEqual(p["plan_valid"], "no")
             self.assertIn("plan does not validate", p["unexplained_errors"][0])
 
-
     def test_plans_of_reused_cells_solved_without_a_validator_are_validated(self):
         # A grid resumed over sessions: cells that ran while no demoplan binary existed
         # carry no verdict on their plans (as the coverage grid's did, 2026-12-06).

@@ -32,6 +32,7 @@ fn default_library() -> Library {
             source: String::new(),
             frames: segmented.frames,
             segments: 0,
+            ..Default::default()
         };
         library.add_recording(info, &header, &segmented.space, &segmented.segments);
     }

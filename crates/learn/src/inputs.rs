@@ -215,6 +215,7 @@ impl Batch {
                     source: path.display().to_string(),
                     frames: segmented.frames,
                     segments: 0,
+                    ..Default::default()
                 };
                 library.add_recording(
                     info,

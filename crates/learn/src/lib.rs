@@ -25,6 +25,7 @@
 //! ```
 
 mod cards;
+mod cause;
 mod domain;
 mod files;
 mod hash;
@@ -32,8 +33,11 @@ mod inputs;
 mod library;
 mod listing;
 mod lock;
+mod meaning;
+mod mend;
 mod operator;
 mod pipeline;
+mod scoring;
 mod timeline;
 mod update;
 
@@ -54,10 +58,14 @@ pub use library::{
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION,
 };
 pub use lock::{lock_path, resolve_target, LockError, Waiting, WriteLock};
-pub use operator::{fact_text, lift, LiftedFact, Operator, ParamType};
+pub use cause::{cause, changes, held, Cause, Changes, OtherHands};
+pub use meaning::{breaches, holding, Breach};
+pub use mend::{meaning_of, mend, MendCounts};
+pub use operator::{fact_text, lift, lift_all, Lifted, LiftedFact, Operator, ParamType};
 pub use pipeline::{
     activities, add_frames, recording_hash, scene_at_frame, segment_frames, segment_reader,
     segment_with, Grouping, HandsGrounded, Observer, Segmented, StateAt,
 };
+pub use scoring::{truth_activities, truth_classes};
 pub use timeline::{activity_color, timeline, Signals};
 pub use update::{LibraryFileError, Update, UpdateError, Updated};

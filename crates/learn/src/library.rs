@@ -13,7 +13,9 @@ use recording::Header;
 use segment::{Activity, Segment};
 use serde::{Deserialize, Serialize};
 
-use crate::operator::{fact_text, lift, LiftedFact, Operator, ParamType};
+use crate::operator::{fact_text, lift_all, LiftedFact, Operator, ParamType};
+use crate::meaning::Breach;
+use crate::mend::{mend, MendCounts};
 use crate::pipeline::{activities, Grouping};
 
 /// The format name written into every library file.
@@ -27,7 +29,7 @@ pub const DEFAULT_LAMBDA: u32 = 100;
 
 /// A recording the library has learned from. Its content hash keeps it from being
 /// counted twice.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub struct RecordingInfo {
     /// Hash of the recording's bytes, 16 hex digits.
     pub hash: String,
@@ -44,6 +46,20 @@ pub struct RecordingInfo {
     /// Its number of segments (each counted once in the library).
     #[serde(default)]
     pub segments: u64,
+    /// Changes seen in it that no hand caused (a cube tipping over, tracker noise): in no
+    /// operator's effects (docs/operators.md). Written only when not 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub uncaused: u64,
+    /// Its activities mended, per breach (docs/operators.md). Written only when any.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub mended: BTreeMap<Breach, u64>,
+    /// Its activities dropped as noise, per breach. Written only when any.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub dropped: BTreeMap<Breach, u64>,
+}
+
+fn is_zero(n: &u64) -> bool {
+    *n == 0
 }
 
 /// One demonstrated segment behind an operator.
@@ -185,9 +201,10 @@ impl Library {
             return Added::AlreadyCounted;
         }
         let mut new_operators = 0usize;
-        let activities = activities(segments, self.grouping);
-        for s in &activities {
-            let operator = lift(s, space, header);
+        let grouped = activities(segments, self.grouping);
+        let (activities, mending) = mend(&grouped, self.grouping, space);
+        let (operators, uncaused) = lift_all(&activities, space, header);
+        for (s, operator) in activities.iter().zip(operators) {
             let provenance = Provenance {
                 recording: info.id.clone(),
                 hash: info.hash.clone(),
@@ -209,6 +226,9 @@ impl Library {
             info.hash.clone(),
             RecordingInfo {
                 segments: segments_counted,
+                uncaused,
+                mended: mending.mended,
+                dropped: mending.dropped,
                 ..info
             },
         );
@@ -292,6 +312,23 @@ impl Library {
     /// The recordings learned from, by hash.
     pub fn recordings(&self) -> impl Iterator<Item = &RecordingInfo> {
         self.recordings.values()
+    }
+
+    /// Activities mended and dropped over every recording ([`crate::mend`]).
+    pub fn mend_counts(&self) -> MendCounts {
+        let mut counts = MendCounts::default();
+        for r in self.recordings.values() {
+            counts.add(&MendCounts {
+                mended: r.mended.clone(),
+                dropped: r.dropped.clone(),
+            });
+        }
+        counts
+    }
+
+    /// Changes that no hand caused, over every recording ([`crate::cause`]).
+    pub fn uncaused(&self) -> u64 {
+        (self.recordings.values()).fold(0u64, |sum, r| sum.saturating_add(r.uncaused))
     }
 
     /// Whether a recording with this hash was counted.

@@ -3,10 +3,11 @@
 
 use std::fmt;
 
-use grounding::{Fact, FactSpace, Predicate, State};
+use grounding::{Fact, FactSpace, Predicate};
 use recording::{EntityId, EntityKind, Header};
 use segment::{Activity, Segment};
 
+use crate::cause::{self, OtherHands};
 use crate::hash::stable_hash;
 
 /// The type of an operator parameter. Types form the hierarchy `hand`, `thing`,
@@ -372,46 +373,35 @@ impl fmt::Display for Operator {
     }
 }
 
-/// The operator a segment demonstrates.
+/// An activity lifted: its operator, and what changed meanwhile that no hand caused.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Lifted {
+    /// The operator.
+    pub operator: Operator,
+    /// Changes seen during the activity that no hand caused (a cube tipping over,
+    /// tracker noise): in no operator.
+    pub uncaused: Vec<Fact>,
+}
+
+/// The operator an activity demonstrates, holding only the changes its own hand caused
+/// ([`crate::cause`]); `others` is what the other hands did meanwhile
+/// ([`OtherHands::during`]).
 ///
-/// Its objects: the segment's hand, the object in hand and the object acted on (at the
-/// segment's last frame), the arguments of this hand's facts that differ between the
-/// state the segment starts from and its last frame, and the arguments of changed facts
-/// between things that share an object with those (putting a cube down changes
-/// `onTop(cube, table)`). Facts about another hand, and changes elsewhere in the scene,
-/// are left out: the other hand has segments of its own. The
-/// precondition is every fact over those objects, positive when it holds in the start
-/// state and negative when not; the effects are the facts over them that differ.
-pub fn lift(segment: &Segment, space: &FactSpace, header: &Header) -> Operator {
-    let hand = segment.hand;
-    let other_hand = |f: &Fact| {
-        f.args()
-            .iter()
-            .any(|&a| a != hand && header_kind(header, a) == Some(EntityKind::Hand))
-    };
-    let mut involved: Vec<EntityId> = vec![hand];
-    involved.extend(segment.in_hand);
-    involved.extend(segment.acted_on);
-    let start = &segment.start_state;
-    let end = &segment.end_state;
-    let changed: Vec<Fact> = start
-        .difference(end)
-        .facts(space)
-        .chain(end.difference(start).facts(space))
-        .filter(|f| !other_hand(f))
-        .collect();
-    // First the objects of this hand's own changed facts, then those of changed facts
-    // between things that share an object with them (a put changes `onTop(cube, table)`);
-    // changes elsewhere in the scene (the other hand stacking) are not this activity's.
-    for f in &changed {
-        if f.args().contains(&hand) {
-            involved.extend_from_slice(f.args());
-        }
-    }
-    for f in &changed {
-        if !f.args().contains(&hand) && f.args().iter().any(|a| involved.contains(a)) {
-            involved.extend_from_slice(f.args());
-        }
+/// Its objects: the activity's hand, the object in hand and the object acted on at its
+/// last frame, and the arguments of the changes its hand caused (putting a cube down
+/// changes `onTop(cube, table)`, so the table is one). The precondition is every fact
+/// over those objects, positive when it holds in the start state and negative when not;
+/// the effects are the changes its hand caused. Changes over those objects that another
+/// hand caused, or none, are in no effect.
+pub fn lift(activity: &Segment, others: &OtherHands, space: &FactSpace, header: &Header) -> Lifted {
+    let start = &activity.start_state;
+    let end = &activity.end_state;
+    let changes = cause::changes(activity, start, end, others, space);
+    let mut involved: Vec<EntityId> = vec![activity.hand];
+    involved.extend(activity.in_hand);
+    involved.extend(activity.acted_on);
+    for f in &changes.own {
+        involved.extend_from_slice(f.args());
     }
     involved.sort_unstable_by_key(|&e| {
         (
@@ -421,26 +411,52 @@ pub fn lift(segment: &Segment, space: &FactSpace, header: &Header) -> Operator {
     });
     involved.dedup();
     let index_of = |e: EntityId| involved.iter().position(|&x| x == e).unwrap_or(0) as u8;
+    let lifted = |f: &Fact| LiftedFact::new(f.predicate, index_of(f.first()), index_of(f.second()));
     let mask = space.mask(&involved);
-    let lifted = |s: &State| -> Vec<LiftedFact> {
-        s.facts(space)
-            .map(|f| LiftedFact::new(f.predicate, index_of(f.first()), index_of(f.second())))
-            .collect()
-    };
     let before = start.restrict(&mask);
-    let after = end.restrict(&mask);
+    let (mut add, mut delete) = (Vec::new(), Vec::new());
+    for f in &changes.own {
+        let holds_before = space.id(f).is_some_and(|id| before.contains(id));
+        if holds_before {
+            delete.push(lifted(f));
+        } else {
+            add.push(lifted(f));
+        }
+    }
     let params = involved
         .iter()
         .map(|&e| ParamType::of_kind(header_kind(header, e).unwrap_or(EntityKind::Other)))
         .collect();
-    Operator::new(
-        segment.activity,
+    let operator = Operator::new(
+        activity.activity,
         params,
-        lifted(&before),
-        lifted(&mask.difference(&before)),
-        lifted(&after.difference(&before)),
-        lifted(&before.difference(&after)),
-    )
+        before.facts(space).map(|f| lifted(&f)).collect(),
+        mask.difference(&before).facts(space).map(|f| lifted(&f)).collect(),
+        add,
+        delete,
+    );
+    Lifted {
+        operator,
+        uncaused: changes.nobody,
+    }
+}
+
+/// A recording's activities lifted, in their order, with the changes no hand caused
+/// counted once: along the first hand's activities (which cover the recording), a change
+/// that neither that activity's hand nor another hand meanwhile caused.
+pub fn lift_all(activities: &[Segment], space: &FactSpace, header: &Header) -> (Vec<Operator>, u64) {
+    let first_hand = activities.iter().map(|a| a.hand).min();
+    let mut operators = Vec::with_capacity(activities.len());
+    let mut uncaused = 0u64;
+    for activity in activities {
+        let others = OtherHands::during(activity, activities, space);
+        let lifted = lift(activity, &others, space, header);
+        if Some(activity.hand) == first_hand {
+            uncaused = uncaused.saturating_add(lifted.uncaused.len() as u64);
+        }
+        operators.push(lifted.operator);
+    }
+    (operators, uncaused)
 }
 
 fn header_kind(header: &Header, e: EntityId) -> Option<EntityKind> {

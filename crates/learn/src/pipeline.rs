@@ -261,6 +261,7 @@ pub fn activities(segments: &[Segment], grouping: Grouping) -> Vec<Segment> {
                 last.moving = s.moving;
                 last.acted_on = s.acted_on;
                 last.in_hand = s.in_hand;
+                union_objects(last, s);
                 last.end_state = s.end_state.clone();
             }
             // Every piece of an Idle run after another activity is taken in: the
@@ -275,12 +276,25 @@ pub fn activities(segments: &[Segment], grouping: Grouping) -> Vec<Segment> {
                 // ends with the Idle's end state.
                 last.end = s.end;
                 last.frames += s.frames;
+                union_objects(last, s);
                 last.end_state = s.end_state.clone();
             }
             _ => out.push(s.clone()),
         }
     }
     out
+}
+
+/// Takes in the objects a later piece of an activity held and acted on.
+fn union_objects(activity: &mut Segment, piece: &Segment) {
+    for (set, more) in [
+        (&mut activity.held, &piece.held),
+        (&mut activity.acted, &piece.acted),
+    ] {
+        set.extend_from_slice(more);
+        set.sort_unstable();
+        set.dedup();
+    }
 }
 
 /// The content hash (16 hex digits) of a recording with these frames as demoplan's
@@ -318,6 +332,7 @@ pub fn add_frames(
             source: source.to_string(),
             frames: segmented.frames,
             segments: 0,
+            ..Default::default()
         },
         header,
         &segmented.space,

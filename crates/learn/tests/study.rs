@@ -36,6 +36,7 @@ fn learnable(demo: &simulate::Demonstration) -> Learnable {
             source: String::new(),
             frames: segmented.frames,
             segments: 0,
+            ..Default::default()
         },
         header,
         segmented,
@@ -137,10 +138,14 @@ fn the_file_round_trips_and_counts_add_up() {
     let read = Library::from_json(&text).unwrap();
     assert_eq!(read, library);
     assert_eq!(read.to_json(), text);
-    // Every activity is one operator occurrence; type counts are sums of counts.
+    // Every activity (once mended) is one operator occurrence; type counts are sums of
+    // counts.
     let activities: u64 = recordings
         .iter()
-        .map(|r| learn::activities(&r.segmented.segments, library.grouping).len() as u64)
+        .map(|r| {
+            let grouped = learn::activities(&r.segmented.segments, library.grouping);
+            learn::mend(&grouped, library.grouping, &r.segmented.space).0.len() as u64
+        })
         .sum();
     assert_eq!(library.segments(), activities);
     let by_type: u64 = Activity::OPERATOR_ORDER

@@ -26,6 +26,11 @@ pub struct Segment {
     pub acted_on: Option<EntityId>,
     /// The object in hand at the segment's last frame, if any.
     pub in_hand: Option<EntityId>,
+    /// Every object the hand held at some frame of the segment, sorted: what it may
+    /// have moved (a segment's last frame shows only the object it ends with).
+    pub held: Vec<EntityId>,
+    /// Every object the hand acted on at some frame of the segment, sorted.
+    pub acted: Vec<EntityId>,
     /// The facts at the last frame before the segment (for the first segment: at its
     /// first frame): the state its activity starts from.
     pub start_state: State,
@@ -56,12 +61,32 @@ struct Run {
     moving: bool,
     acted_on: Option<EntityId>,
     in_hand: Option<EntityId>,
+    held: Vec<EntityId>,
+    acted: Vec<EntityId>,
     start_state: State,
     end_state: State,
 }
 
+/// Adds `e` to a sorted set of entities.
+fn insert_sorted(set: &mut Vec<EntityId>, e: EntityId) {
+    if let Err(at) = set.binary_search(&e) {
+        set.insert(at, e);
+    }
+}
+
 impl Run {
+    /// Takes in the objects another run held and acted on.
+    fn union_objects(&mut self, other: &Run) {
+        for &e in &other.held {
+            insert_sorted(&mut self.held, e);
+        }
+        for &e in &other.acted {
+            insert_sorted(&mut self.acted, e);
+        }
+    }
+
     fn absorb_after(&mut self, later: Run) {
+        self.union_objects(&later);
         self.end = later.end;
         self.next = later.next;
         self.frames += later.frames;
@@ -84,6 +109,7 @@ impl Run {
     }
 
     fn absorb_before(&mut self, earlier: Run) {
+        self.union_objects(&earlier);
         self.start = earlier.start;
         self.frames += earlier.frames;
         self.start_state = earlier.start_state;
@@ -99,6 +125,8 @@ impl Run {
             moving: self.moving,
             acted_on: self.acted_on,
             in_hand: self.in_hand,
+            held: self.held,
+            acted: self.acted,
             start_state: self.start_state,
             end_state: self.end_state,
         }
@@ -181,11 +209,13 @@ impl Segmenter {
                     run.end = time;
                     run.frames += 1;
                     run.votes[activity.index()] += 1;
-                    if facts.acted_on.is_some() {
-                        run.acted_on = facts.acted_on;
+                    if let Some(e) = facts.acted_on {
+                        run.acted_on = Some(e);
+                        insert_sorted(&mut run.acted, e);
                     }
-                    if facts.in_hand.is_some() {
-                        run.in_hand = facts.in_hand;
+                    if let Some(e) = facts.in_hand {
+                        run.in_hand = Some(e);
+                        insert_sorted(&mut run.held, e);
                     }
                 }
                 _ => {
@@ -212,6 +242,8 @@ impl Segmenter {
                         moving: facts.moving,
                         acted_on: facts.acted_on,
                         in_hand: facts.in_hand,
+                        held: facts.in_hand.into_iter().collect(),
+                        acted: facts.acted_on.into_iter().collect(),
                         start_state,
                         end_state: State::default(),
                     });

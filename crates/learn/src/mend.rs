@@ -1,0 +1,242 @@
+//! Mending activities whose effects contradict their class ([`crate::breaches`]):
+//! relabelled by what their effects mean, joined with a neighbour, or dropped as noise
+//! (docs/operators.md, "Activities that mean what they say").
+//!
+//! Why activities breach their class, found on simulated and real recordings:
+//! - the segmenter merges a segment shorter than the minimum duration into a neighbour,
+//!   and the neighbour takes its end state: an Idle that absorbed a short grasp ends
+//!   holding a cube, a Reach that absorbed the closing hand adds `inHand`;
+//! - a hand that passes close to a cube on its way back to rest is, for a moment,
+//!   acting on it (Table 1's Reach) but ends at nothing;
+//! - a Stack whose hand hovers above the tower before the descent is split in two, the
+//!   first part still holding the cube;
+//! - grasps known only from geometry flicker where the tracker loses the hand.
+//!
+//! The rules, one activity at a time, in order:
+//! - a Stack that ends still holding its cube, followed by the hand's next placement (Put
+//!   or Stack), is the first part of that placement: the two join;
+//! - any other breach: the activity gets the class its effects mean ([`meaning_of`]):
+//!   Take when it ends holding a cube it did not hold, Put when it ends still carrying
+//!   one, Stack or Put when it let a cube come to rest on a cube or the table, Reach when it ends acting on or next to a cube,
+//!   Idle when it changed nothing in the scene;
+//! - effects no class means (a cube set down by a hand that never held it) are noise:
+//!   the activity is dropped.
+//!
+//! Then the activities are grouped again as the library's grouping says (a relabelled
+//! activity may join its neighbour of the same class, or settle the one before it), and
+//! an activity that still breaches its class is dropped. A Put may end still holding its
+//! cube: the paper's chain Reach, Take, Put, Stack carries the cube with the Put.
+
+use std::collections::BTreeMap;
+
+use grounding::{Fact, FactSpace, Predicate, State};
+use recording::EntityId;
+use segment::{Activity, Segment};
+
+use crate::cause::{changes, OtherHands};
+use crate::meaning::{breaches, holding, Breach};
+use crate::pipeline::{activities, Grouping};
+
+/// What mending did, per breach: activities mended (relabelled or joined) and dropped.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct MendCounts {
+    /// Mended activities per breach.
+    pub mended: BTreeMap<Breach, u64>,
+    /// Dropped activities per breach.
+    pub dropped: BTreeMap<Breach, u64>,
+}
+
+impl MendCounts {
+    /// Activities mended, over every breach.
+    pub fn mended_total(&self) -> u64 {
+        (self.mended.values()).fold(0u64, |sum, n| sum.saturating_add(*n))
+    }
+
+    /// Activities dropped, over every breach.
+    pub fn dropped_total(&self) -> u64 {
+        (self.dropped.values()).fold(0u64, |sum, n| sum.saturating_add(*n))
+    }
+
+    /// Adds another's counts.
+    pub fn add(&mut self, other: &MendCounts) {
+        for (mine, theirs) in [
+            (&mut self.mended, &other.mended),
+            (&mut self.dropped, &other.dropped),
+        ] {
+            for (b, n) in theirs {
+                let count = mine.entry(*b).or_default();
+                *count = count.saturating_add(*n);
+            }
+        }
+    }
+
+    /// The line `demoplan learn` prints: `mended 3 activities (stack keeps its cube 3),
+    /// dropped 0; 2 changes no hand caused`.
+    pub fn line(&self, uncaused: u64) -> String {
+        let per = |m: &BTreeMap<Breach, u64>| {
+            let parts: Vec<String> = m.iter().map(|(b, n)| format!("{} {n}", b.name())).collect();
+            if parts.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", parts.join(", "))
+            }
+        };
+        format!(
+            "mended {} activities{}, dropped {}{}; {uncaused} changes no hand caused\n",
+            self.mended_total(),
+            per(&self.mended),
+            self.dropped_total(),
+            per(&self.dropped),
+        )
+    }
+}
+
+fn holds(state: &State, space: &FactSpace, fact: Fact) -> bool {
+    space.id(&fact).is_some_and(|id| state.contains(id))
+}
+
+/// The class an activity's effects mean (see the module documentation), or `None` when
+/// no class means them. `own` are the changes its hand caused.
+pub fn meaning_of(activity: &Segment, own: &[Fact], space: &FactSpace) -> Option<Activity> {
+    let hand = activity.hand;
+    let (start, end) = (&activity.start_state, &activity.end_state);
+    let added = |f: &Fact| !holds(start, space, *f) && holds(end, space, *f);
+    let held_before = holding(start, space, hand);
+    let held_after = holding(end, space, hand);
+    if held_after.iter().any(|c| !held_before.contains(c)) {
+        return Some(Activity::Take);
+    }
+    if !held_after.is_empty() {
+        // Still carrying what it held: the paper's Put, a carry.
+        return Some(Activity::Put);
+    }
+    let mut moved: Vec<EntityId> = activity.held.clone();
+    moved.extend(&held_before);
+    let landed = own.iter().find(|f| {
+        f.predicate == Predicate::OnTop && added(f) && moved.contains(&f.first())
+    });
+    if let Some(f) = landed {
+        let on_cube = space.objects().contains(&f.second());
+        return Some(if on_cube { Activity::Stack } else { Activity::Put });
+    }
+    let things_changed = own
+        .iter()
+        .any(|f| matches!(f.predicate, Predicate::OnTop | Predicate::InTouch) && added(f));
+    if things_changed {
+        return None;
+    }
+    let near = space.objects().iter().any(|&o| {
+        holds(end, space, Fact::binary(Predicate::ActedOn, hand, o))
+            || holds(end, space, Fact::binary(Predicate::Graspable, hand, o))
+    });
+    if near && held_after.is_empty() && activity.activity != Activity::Idle {
+        return Some(Activity::Reach);
+    }
+    Some(Activity::Idle)
+}
+
+fn own_changes(activity: &Segment, all: &[Segment], space: &FactSpace) -> Vec<Fact> {
+    let others = OtherHands::during(activity, all, space);
+    changes(
+        activity,
+        &activity.start_state,
+        &activity.end_state,
+        &others,
+        space,
+    )
+    .own
+}
+
+/// Joins `later` into `earlier`: one activity over both spans, with the later one's class.
+fn join(earlier: &Segment, later: &Segment) -> Segment {
+    let mut joined = later.clone();
+    joined.start = earlier.start;
+    joined.frames += earlier.frames;
+    joined.start_state = earlier.start_state.clone();
+    for (set, more) in [
+        (&mut joined.held, &earlier.held),
+        (&mut joined.acted, &earlier.acted),
+    ] {
+        set.extend_from_slice(more);
+        set.sort_unstable();
+        set.dedup();
+    }
+    joined
+}
+
+/// The activities of a recording (from [`activities`], sorted by hand, then time)
+/// mended, and what was done. Under [`Grouping::Runs`] nothing is mended: there the Idle
+/// after a Stack is the cube landing, an Idle that changes things by design.
+pub fn mend(
+    grouped: &[Segment],
+    grouping: Grouping,
+    space: &FactSpace,
+) -> (Vec<Segment>, MendCounts) {
+    if grouping == Grouping::Runs {
+        return (grouped.to_vec(), MendCounts::default());
+    }
+    let (mended, counts) = mend_pass(grouped, space);
+    regroup(mended, grouping, space, counts)
+}
+
+/// One pass of the rules over `grouped`, without regrouping.
+fn mend_pass(grouped: &[Segment], space: &FactSpace) -> (Vec<Segment>, MendCounts) {
+    let mut counts = MendCounts::default();
+    let mut out: Vec<Segment> = Vec::with_capacity(grouped.len());
+    let mut pending: Option<Segment> = None;
+    let mut i = 0;
+    while i < grouped.len() || pending.is_some() {
+        let a = match pending.take() {
+            Some(a) => a,
+            None => {
+                let a = grouped[i].clone();
+                i += 1;
+                a
+            }
+        };
+        let own = own_changes(&a, grouped, space);
+        let Some(&breach) = breaches(&a, &own, space).iter().find(|b| b.is_mended()) else {
+            out.push(a);
+            continue;
+        };
+        let next = grouped.get(i).filter(|n| n.hand == a.hand);
+        let placement = |s: &Segment| matches!(s.activity, Activity::Put | Activity::Stack);
+        if breach == Breach::PlacementKeepsCube && next.is_some_and(placement) {
+            if let Some(n) = next {
+                pending = Some(join(&a, n));
+                i += 1;
+                *counts.mended.entry(breach).or_default() += 1;
+                continue;
+            }
+        }
+        match meaning_of(&a, &own, space) {
+            Some(class) if class != a.activity => {
+                let mut relabelled = a;
+                relabelled.activity = class;
+                out.push(relabelled);
+                *counts.mended.entry(breach).or_default() += 1;
+            }
+            _ => *counts.dropped.entry(breach).or_default() += 1,
+        }
+    }
+    (out, counts)
+}
+
+/// Groups mended activities again and drops those that still breach their class.
+fn regroup(
+    mended: Vec<Segment>,
+    grouping: Grouping,
+    space: &FactSpace,
+    mut counts: MendCounts,
+) -> (Vec<Segment>, MendCounts) {
+    let grouped = activities(&mended, grouping);
+    let mut out = Vec::with_capacity(grouped.len());
+    for a in &grouped {
+        let own = own_changes(a, &grouped, space);
+        match breaches(a, &own, space).iter().find(|b| b.is_mended()) {
+            Some(&breach) => *counts.dropped.entry(breach).or_default() += 1,
+            None => out.push(a.clone()),
+        }
+    }
+    (out, counts)
+}

@@ -65,15 +65,22 @@ fn main() {
             for (i, a) in acts.iter().enumerate() {
                 total += 1;
                 let truth = classes[i].unwrap_or(segment::Activity::Idle);
-                *agree.entry((a.activity.name().to_string(), truth.name().to_string())).or_default() += 1;
+                *agree
+                    .entry((a.activity.name().to_string(), truth.name().to_string()))
+                    .or_default() += 1;
                 let others = OtherHands::during(a, &acts, &seg.space);
                 let ch = changes(a, &a.start_state, &a.end_state, &others, &seg.space);
                 for b in breaches(a, &ch.own, &seg.space) {
-                    *tally.entry((a.activity.name().to_string(), b.name())).or_default() += 1;
+                    *tally
+                        .entry((a.activity.name().to_string(), b.name()))
+                        .or_default() += 1;
                     if shown < 12 {
                         shown += 1;
                         let next = acts.get(i + 1).filter(|n| n.hand == a.hand);
-                        let prev = i.checked_sub(1).and_then(|j| acts.get(j)).filter(|n| n.hand == a.hand);
+                        let prev = i
+                            .checked_sub(1)
+                            .and_then(|j| acts.get(j))
+                            .filter(|n| n.hand == a.hand);
                         println!(
                             "seed {seed} {} hand {:?} {:?} {:.3}-{:.3} prev {:?} next {:?}: {}; own {:?}",
                             demo.id,
@@ -91,8 +98,15 @@ fn main() {
             }
         }
     }
-    println!("{total} activities; mended {:?}; dropped {:?}", all_counts.mended, all_counts.dropped);
-    let same: u64 = agree.iter().filter(|((a, b), _)| a == b).map(|(_, n)| n).sum();
+    println!(
+        "{total} activities; mended {:?}; dropped {:?}",
+        all_counts.mended, all_counts.dropped
+    );
+    let same: u64 = agree
+        .iter()
+        .filter(|((a, b), _)| a == b)
+        .map(|(_, n)| n)
+        .sum();
     println!("agreement with the truth's activities: {same} of {total}");
     for ((class, truth), n) in &agree {
         if class != truth {

@@ -149,18 +149,18 @@ pub fn changes(
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::operator::lift;
     use proptest::prelude::*;
     use recording::{Entity, EntityKind, Header, Pose, Vec3};
     use segment::Activity;
 
-    const LEFT: EntityId = EntityId(0);
-    const RIGHT: EntityId = EntityId(1);
+    pub(crate) const LEFT: EntityId = EntityId(0);
+    pub(crate) const RIGHT: EntityId = EntityId(1);
 
     /// Two hands, `cubes` cubes (entities 2..), the table last.
-    fn scene(cubes: usize) -> Header {
+    pub(crate) fn scene(cubes: usize) -> Header {
         let e = |name: String, kind: EntityKind, fixed: bool| Entity {
             name,
             kind,
@@ -183,7 +183,7 @@ mod tests {
         }
     }
 
-    fn state(space: &FactSpace, facts: &[Fact]) -> State {
+    pub(crate) fn state(space: &FactSpace, facts: &[Fact]) -> State {
         let mut s = space.empty_state();
         for f in facts {
             s.insert(space.id(f).expect("a fact of the scene"));
@@ -191,14 +191,14 @@ mod tests {
         s
     }
 
-    fn on(a: u32, b: u32) -> [Fact; 2] {
+    pub(crate) fn on(a: u32, b: u32) -> [Fact; 2] {
         [
             Fact::binary(Predicate::OnTop, EntityId(a), EntityId(b)),
             Fact::binary(Predicate::InTouch, EntityId(a), EntityId(b)),
         ]
     }
 
-    fn activity(
+    pub(crate) fn activity(
         hand: EntityId,
         class: Activity,
         held: &[u32],
@@ -240,10 +240,22 @@ mod tests {
         after.extend(on(4, table));
         after.push(Fact::binary(Predicate::ActedOn, RIGHT, EntityId(4)));
         let (start, end) = (state(&space, &before), state(&space, &after));
-        let reach = activity(RIGHT, Activity::Reach, &[], &[4], start.clone(), end.clone());
+        let reach = activity(
+            RIGHT,
+            Activity::Reach,
+            &[],
+            &[4],
+            start.clone(),
+            end.clone(),
+        );
         let stack = activity(LEFT, Activity::Stack, &[2], &[3], start, end);
         let all = [stack.clone(), reach.clone()];
-        let lifted = lift(&reach, &OtherHands::during(&reach, &all, &space), &space, &header);
+        let lifted = lift(
+            &reach,
+            &OtherHands::during(&reach, &all, &space),
+            &space,
+            &header,
+        );
         let text = lifted.operator.canonical_text();
         assert_eq!(
             text,
@@ -253,13 +265,25 @@ mod tests {
         );
         assert!(lifted.uncaused.is_empty());
         // The Stack has the stacking, and what the left hand let go of; not the reach.
-        let lifted = lift(&stack, &OtherHands::during(&stack, &all, &space), &space, &header);
+        let lifted = lift(
+            &stack,
+            &OtherHands::during(&stack, &all, &space),
+            &space,
+            &header,
+        );
         let op = &lifted.operator;
         let names = op.param_names();
         let adds: Vec<String> = op.add.iter().map(|f| crate::fact_text(f, &names)).collect();
-        let dels: Vec<String> = op.delete.iter().map(|f| crate::fact_text(f, &names)).collect();
+        let dels: Vec<String> = op
+            .delete
+            .iter()
+            .map(|f| crate::fact_text(f, &names))
+            .collect();
         assert_eq!(adds, ["inTouch(?c1, ?c2)", "onTop(?c1, ?c2)"]);
-        assert_eq!(dels, ["inHand(?h, ?c1)", "inTouch(?c1, ?t)", "onTop(?c1, ?t)"]);
+        assert_eq!(
+            dels,
+            ["inHand(?h, ?c1)", "inTouch(?c1, ?t)", "onTop(?c1, ?t)"]
+        );
     }
 
     /// A cube that tips off the table's edge while no hand is near is nobody's change.
@@ -280,8 +304,10 @@ mod tests {
 
     /// A random activity of the left hand in a scene of `n` cubes: start and end states,
     /// the objects it held and acted on, and what the right hand held meanwhile.
-    fn random_case() -> impl Strategy<Value = (usize, Vec<bool>, Vec<bool>, Vec<u8>, Vec<u8>, Vec<u8>)>
-    {
+    /// Cubes, start and end facts (one flag per fact), held, acted on, the other's held.
+    type Case = (usize, Vec<bool>, Vec<bool>, Vec<u8>, Vec<u8>, Vec<u8>);
+
+    fn random_case() -> impl Strategy<Value = Case> {
         (2usize..5).prop_flat_map(|n| {
             let facts = FactSpace::new(&scene(n)).len();
             (

@@ -42,6 +42,7 @@ mod timeline;
 mod update;
 
 pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
+pub use cause::{cause, changes, held, Cause, Changes, OtherHands};
 pub use domain::{
     action, chosen_domain, domain, domain_name, levels, operator_subset, paper_goal_tower,
     pddl_predicate, per_type, problem, tower_goal, DomainChoice, DomainOptions, EmptyDomain, Level,
@@ -58,7 +59,6 @@ pub use library::{
     DEFAULT_LAMBDA, FORMAT_NAME, FORMAT_VERSION,
 };
 pub use lock::{lock_path, resolve_target, LockError, Waiting, WriteLock};
-pub use cause::{cause, changes, held, Cause, Changes, OtherHands};
 pub use meaning::{breaches, holding, Breach};
 pub use mend::{meaning_of, mend, MendCounts};
 pub use operator::{fact_text, lift, lift_all, Lifted, LiftedFact, Operator, ParamType};

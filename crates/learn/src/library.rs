@@ -13,9 +13,9 @@ use recording::Header;
 use segment::{Activity, Segment};
 use serde::{Deserialize, Serialize};
 
-use crate::operator::{fact_text, lift_all, LiftedFact, Operator, ParamType};
 use crate::meaning::Breach;
 use crate::mend::{mend, MendCounts};
+use crate::operator::{fact_text, lift_all, LiftedFact, Operator, ParamType};
 use crate::pipeline::{activities, Grouping};
 
 /// The format name written into every library file.

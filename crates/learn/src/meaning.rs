@@ -90,7 +90,10 @@ pub fn breaches(activity: &Segment, own: &[Fact], space: &FactSpace) -> Vec<Brea
     let hand = activity.hand;
     let end = &activity.end_state;
     let start = &activity.start_state;
-    let added = |p: Predicate| own.iter().any(|f| f.predicate == p && !holds(start, space, *f));
+    let added = |p: Predicate| {
+        own.iter()
+            .any(|f| f.predicate == p && !holds(start, space, *f))
+    };
     let mut out = Vec::new();
     match activity.activity {
         Activity::Idle => {
@@ -125,9 +128,7 @@ pub fn breaches(activity: &Segment, own: &[Fact], space: &FactSpace) -> Vec<Brea
             let keeps = cubes.iter().any(|c| still.contains(c));
             if keeps && activity.activity == Activity::Stack {
                 out.push(Breach::PlacementKeepsCube);
-            } else if (cubes.iter())
-                .any(|&c| !still.contains(&c) && !supported(end, space, c))
-            {
+            } else if (cubes.iter()).any(|&c| !still.contains(&c) && !supported(end, space, c)) {
                 out.push(Breach::PlacementLeavesCubeUnsupported);
             }
         }

@@ -112,12 +112,16 @@ pub fn meaning_of(activity: &Segment, own: &[Fact], space: &FactSpace) -> Option
     }
     let mut moved: Vec<EntityId> = activity.held.clone();
     moved.extend(&held_before);
-    let landed = own.iter().find(|f| {
-        f.predicate == Predicate::OnTop && added(f) && moved.contains(&f.first())
-    });
+    let landed = own
+        .iter()
+        .find(|f| f.predicate == Predicate::OnTop && added(f) && moved.contains(&f.first()));
     if let Some(f) = landed {
         let on_cube = space.objects().contains(&f.second());
-        return Some(if on_cube { Activity::Stack } else { Activity::Put });
+        return Some(if on_cube {
+            Activity::Stack
+        } else {
+            Activity::Put
+        });
     }
     let things_changed = own
         .iter()
@@ -239,4 +243,92 @@ fn regroup(
         }
     }
     (out, counts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::cause::tests::{activity, on, scene, state, LEFT};
+
+    fn classes(mended: &[Segment]) -> Vec<Activity> {
+        mended.iter().map(|a| a.activity).collect()
+    }
+
+    /// The case: an Idle from the start whose end state holds a cube (a short
+    /// grasp merged into it) is the Take it ends with.
+    #[test]
+    fn an_idle_that_grasps_is_a_take() {
+        let header = scene(2);
+        let space = FactSpace::new(&header);
+        let grasp = Fact::binary(Predicate::InHand, LEFT, EntityId(2));
+        let start = state(&space, &on(2, 4));
+        let mut end_facts = on(2, 4).to_vec();
+        end_facts.push(grasp);
+        let idle = activity(
+            LEFT,
+            Activity::Idle,
+            &[2],
+            &[],
+            start,
+            state(&space, &end_facts),
+        );
+        let (mended, counts) = mend(&[idle], Grouping::Settled, &space);
+        assert_eq!(classes(&mended), [Activity::Take]);
+        assert_eq!(counts.mended.get(&Breach::IdleChangesThings), Some(&1));
+        assert_eq!(counts.dropped_total(), 0);
+    }
+
+    /// A Stack whose hand hovers, still holding the cube, then sets it down: one Stack.
+    #[test]
+    fn a_stack_that_keeps_its_cube_joins_the_placement_after_it() {
+        let header = scene(2);
+        let space = FactSpace::new(&header);
+        let held = Fact::binary(Predicate::InHand, LEFT, EntityId(2));
+        let (mut carrying, mut stacked) = (on(3, 4).to_vec(), on(3, 4).to_vec());
+        carrying.push(held);
+        stacked.extend(on(2, 3));
+        let hover = activity(
+            LEFT,
+            Activity::Stack,
+            &[2],
+            &[3],
+            state(&space, &carrying),
+            state(&space, &carrying),
+        );
+        let mut descent = activity(
+            LEFT,
+            Activity::Stack,
+            &[2],
+            &[3],
+            state(&space, &carrying),
+            state(&space, &stacked),
+        );
+        (descent.start, descent.end) = (1.0, 2.0);
+        let (mended, counts) = mend(&[hover, descent], Grouping::Settled, &space);
+        assert_eq!(classes(&mended), [Activity::Stack]);
+        assert_eq!((mended[0].start, mended[0].end), (0.0, 2.0));
+        assert_eq!(counts.mended.get(&Breach::PlacementKeepsCube), Some(&1));
+    }
+
+    /// A cube that comes to rest on another while the hand idles, held by no hand: noise.
+    #[test]
+    fn an_idle_that_sets_down_a_cube_it_never_held_is_dropped() {
+        let header = scene(2);
+        let space = FactSpace::new(&header);
+        let idle = activity(
+            LEFT,
+            Activity::Idle,
+            &[],
+            &[2],
+            state(&space, &on(2, 4)),
+            state(&space, &on(2, 3)),
+        );
+        let (mended, counts) = mend(std::slice::from_ref(&idle), Grouping::Settled, &space);
+        assert!(mended.is_empty());
+        assert_eq!(counts.dropped.get(&Breach::IdleChangesThings), Some(&1));
+        // Under `runs`, nothing is mended.
+        let (kept, counts) = mend(&[idle], Grouping::Runs, &space);
+        assert_eq!(kept.len(), 1);
+        assert_eq!(counts, MendCounts::default());
+    }
 }

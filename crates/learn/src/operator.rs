@@ -431,7 +431,10 @@ pub fn lift(activity: &Segment, others: &OtherHands, space: &FactSpace, header: 
         activity.activity,
         params,
         before.facts(space).map(|f| lifted(&f)).collect(),
-        mask.difference(&before).facts(space).map(|f| lifted(&f)).collect(),
+        mask.difference(&before)
+            .facts(space)
+            .map(|f| lifted(&f))
+            .collect(),
         add,
         delete,
     );
@@ -444,7 +447,11 @@ pub fn lift(activity: &Segment, others: &OtherHands, space: &FactSpace, header: 
 /// A recording's activities lifted, in their order, with the changes no hand caused
 /// counted once: along the first hand's activities (which cover the recording), a change
 /// that neither that activity's hand nor another hand meanwhile caused.
-pub fn lift_all(activities: &[Segment], space: &FactSpace, header: &Header) -> (Vec<Operator>, u64) {
+pub fn lift_all(
+    activities: &[Segment],
+    space: &FactSpace,
+    header: &Header,
+) -> (Vec<Operator>, u64) {
     let first_hand = activities.iter().map(|a| a.hand).min();
     let mut operators = Vec::with_capacity(activities.len());
     let mut uncaused = 0u64;

@@ -35,6 +35,24 @@ fn main() {
             let (frames, truths): (Vec<_>, Vec<_>) = demo.frames().unzip();
             let seg = learn::segment_frames(demo.header(), frames.clone(), &config, &tree);
             let acts = activities(&seg.segments, grouping);
+            if std::env::var("SHOW").is_ok_and(|d| d == demo.id) {
+                for a in &acts {
+                    let others = OtherHands::during(a, &acts, &seg.space);
+                    let ch = changes(a, &a.start_state, &a.end_state, &others, &seg.space);
+                    println!(
+                        "  {:?} {:?} {:.3}-{:.3} held {:?} own {:?}",
+                        a.hand,
+                        a.activity,
+                        a.start,
+                        a.end,
+                        a.held,
+                        ch.own
+                            .iter()
+                            .map(|f| f.display(demo.header()).to_string())
+                            .collect::<Vec<_>>()
+                    );
+                }
+            }
             let (acts, counts) = if mended {
                 learn::mend(&acts, grouping, &seg.space)
             } else {

@@ -2,7 +2,8 @@
 //! and the activities whose effects say otherwise.
 //!
 //! In grounded facts, for the activity's own hand `h`:
-//! - Idle adds no `inHand`, `onTop` or `inTouch`;
+//! - Idle adds no `inHand`, `onTop` or `inTouch`, and ends acting on no cube it did not
+//!   act on at its start;
 //! - Reach ends with `actedOn(h, c)` or `graspable(h, c)` of a cube and adds no `inHand`;
 //! - Take ends with `inHand(h, c)`;
 //! - Stack ends with the cube it held no longer `inHand` and `onTop` the table or a cube;
@@ -23,6 +24,9 @@ use segment::{Activity, Segment};
 pub enum Breach {
     /// An Idle whose hand's changes add `inHand`, `onTop` or `inTouch`.
     IdleChangesThings,
+    /// An Idle that ends acting on a cube it did not act on (Table 1's Idle acts on
+    /// nothing: the end of a Reach merged into it).
+    IdleActsOn,
     /// A Reach that ends acting on no cube and with none graspable.
     ReachEndsAtNothing,
     /// A Reach that adds `inHand`.
@@ -37,8 +41,9 @@ pub enum Breach {
 
 impl Breach {
     /// Every breach, in order.
-    pub const ALL: [Breach; 6] = [
+    pub const ALL: [Breach; 7] = [
         Breach::IdleChangesThings,
+        Breach::IdleActsOn,
         Breach::ReachEndsAtNothing,
         Breach::ReachGrasps,
         Breach::TakeEndsEmpty,
@@ -58,6 +63,7 @@ impl Breach {
     pub fn name(self) -> &'static str {
         match self {
             Breach::IdleChangesThings => "idle-changes-things",
+            Breach::IdleActsOn => "idle-acts-on",
             Breach::ReachEndsAtNothing => "reach-ends-at-nothing",
             Breach::ReachGrasps => "reach-grasps",
             Breach::TakeEndsEmpty => "take-ends-empty",
@@ -84,6 +90,14 @@ fn supported(state: &State, space: &FactSpace, cube: EntityId) -> bool {
         .any(|t| t != cube && holds(state, space, Fact::binary(Predicate::OnTop, cube, t)))
 }
 
+/// Whether the states say where things rest: some thing stands on another. A hand-state
+/// table (ARFF) has no geometry, and its states never do.
+fn has_geometry(start: &State, end: &State, space: &FactSpace) -> bool {
+    [start, end]
+        .iter()
+        .any(|s| s.facts(space).any(|f| f.predicate == Predicate::OnTop))
+}
+
 /// The breaches of an activity whose own hand caused `own` (its effects, from
 /// [`crate::changes`]), first the one that decides how it is mended.
 pub fn breaches(activity: &Segment, own: &[Fact], space: &FactSpace) -> Vec<Breach> {
@@ -99,6 +113,13 @@ pub fn breaches(activity: &Segment, own: &[Fact], space: &FactSpace) -> Vec<Brea
         Activity::Idle => {
             if added(Predicate::InHand) || added(Predicate::OnTop) || added(Predicate::InTouch) {
                 out.push(Breach::IdleChangesThings);
+            }
+            let acts_at_end = space
+                .objects()
+                .iter()
+                .any(|&o| holds(end, space, Fact::binary(Predicate::ActedOn, hand, o)));
+            if added(Predicate::ActedOn) && acts_at_end {
+                out.push(Breach::IdleActsOn);
             }
         }
         Activity::Reach => {
@@ -128,7 +149,9 @@ pub fn breaches(activity: &Segment, own: &[Fact], space: &FactSpace) -> Vec<Brea
             let keeps = cubes.iter().any(|c| still.contains(c));
             if keeps && activity.activity == Activity::Stack {
                 out.push(Breach::PlacementKeepsCube);
-            } else if (cubes.iter()).any(|&c| !still.contains(&c) && !supported(end, space, c)) {
+            } else if has_geometry(start, end, space)
+                && (cubes.iter()).any(|&c| !still.contains(&c) && !supported(end, space, c))
+            {
                 out.push(Breach::PlacementLeavesCubeUnsupported);
             }
         }

@@ -13,8 +13,9 @@
 //! - grasps known only from geometry flicker where the tracker loses the hand.
 //!
 //! The rules, one activity at a time, in order:
-//! - a Stack that ends still holding its cube, followed by the hand's next placement (Put
-//!   or Stack), is the first part of that placement: the two join;
+//! - a Stack that ends still holding its cube is completed by the hand's next activity
+//!   when that one lets the cube go (a Stack or Put, or a Take in which the hand rests on
+//!   the tower and opens): the two join, with the class the landing means;
 //! - any other breach: the activity gets the class its effects mean ([`meaning_of`]):
 //!   Take when it ends holding a cube it did not hold, Put when it ends still carrying
 //!   one, Stack or Put when it let a cube come to rest on a cube or the table, Reach when it ends acting on or next to a cube,
@@ -133,7 +134,18 @@ pub fn meaning_of(activity: &Segment, own: &[Fact], space: &FactSpace) -> Option
         holds(end, space, Fact::binary(Predicate::ActedOn, hand, o))
             || holds(end, space, Fact::binary(Predicate::Graspable, hand, o))
     });
-    if near && held_after.is_empty() && activity.activity != Activity::Idle {
+    let acts_newly = space.objects().iter().any(|&o| {
+        let f = Fact::binary(Predicate::ActedOn, hand, o);
+        !holds(start, space, f) && holds(end, space, f)
+    });
+    // An Idle that ends near a cube is a hand at rest beside it; one that came to act on
+    // a cube is the end of a Reach.
+    let reached = if activity.activity == Activity::Idle {
+        acts_newly
+    } else {
+        near
+    };
+    if reached && held_after.is_empty() {
         return Some(Activity::Reach);
     }
     Some(Activity::Idle)
@@ -204,10 +216,22 @@ fn mend_pass(grouped: &[Segment], space: &FactSpace) -> (Vec<Segment>, MendCount
             continue;
         };
         let next = grouped.get(i).filter(|n| n.hand == a.hand);
-        let placement = |s: &Segment| matches!(s.activity, Activity::Put | Activity::Stack);
-        if breach == Breach::PlacementKeepsCube && next.is_some_and(placement) {
-            if let Some(n) = next {
-                pending = Some(join(&a, n));
+        if breach == Breach::PlacementKeepsCube {
+            // The hand's next activity that lets the cube go completes the placement: a
+            // Stack or Put, or a Take in which the hand rests on the tower and opens.
+            let kept = holding(&a.end_state, space, a.hand);
+            let completes = |n: &&Segment| {
+                let still = holding(&n.end_state, space, n.hand);
+                n.activity != Activity::Idle && kept.iter().any(|c| !still.contains(c))
+            };
+            if let Some(n) = next.filter(completes) {
+                let mut joined = join(&a, n);
+                let own = own_changes(&joined, grouped, space);
+                joined.activity = match meaning_of(&joined, &own, space) {
+                    Some(class @ (Activity::Put | Activity::Stack)) => class,
+                    _ => a.activity,
+                };
+                pending = Some(joined);
                 i += 1;
                 *counts.mended.entry(breach).or_default() += 1;
                 continue;

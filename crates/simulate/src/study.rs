@@ -467,8 +467,8 @@ fn demonstration(
 
 /// A tower built with both hands: `first` puts a cube onto the base, the other hand a
 /// cube onto that one (and so on, alternating, when there are more). Each next hand
-/// starts reaching while the one before holds its cube (between its grasp and its
-/// release), takes its own cube and holds it still until the cube below is in place and
+/// starts reaching while the one before holds its cube (from 0.2 s before its grasp to a
+/// third of the way from its grasp to its release), takes its own cube and holds it still until the cube below is in place and
 /// the other hand leaves. Every hand goes back to rest after its last placement.
 fn two_handed(
     p: &SimParams,
@@ -506,7 +506,9 @@ fn two_handed(
     let mut before: Option<crate::script::Timing> = None;
     for (k, &hand) in hands.iter().enumerate() {
         if let Some(t) = before {
-            planner.wait_hand_until(hand, rng.uniform(t.grasp, t.release));
+            // Early enough that the reach ends while the other hand still holds its cube.
+            let latest = t.grasp + 0.35 * (t.release - t.grasp);
+            planner.wait_hand_until(hand, rng.uniform(t.grasp - 0.2, latest));
         }
         let (cube, onto) = (chosen[k + 1], chosen[k]);
         let last = !hands[k + 1..].contains(&hand);

@@ -12,8 +12,9 @@ use serde::{Deserialize, Serialize};
 use crate::params::{Interval, SimParams};
 
 /// A named style of demonstration.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
-#[derive(Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Default, Serialize, Deserialize,
+)]
 #[serde(rename_all = "kebab-case")]
 pub enum Style {
     /// The paper's study: one hand at a time, grasps and contacts reported (the default).
@@ -86,7 +87,10 @@ impl SimParams {
     /// Parameters from a JSON object (a `--params` file): the fields it names, and for
     /// the others the values of the style: `style` if given, else the file's own `style`
     /// field, else the paper's. A style given here wins over the file's.
-    pub fn from_json_text(text: &str, style: Option<Style>) -> Result<SimParams, serde_json::Error> {
+    pub fn from_json_text(
+        text: &str,
+        style: Option<Style>,
+    ) -> Result<SimParams, serde_json::Error> {
         // Parsed once as it is, so that mistakes are reported with their line and column.
         let named: SimParams = serde_json::from_str(text)?;
         let style = style.unwrap_or(named.style);
@@ -121,18 +125,27 @@ mod tests {
         let two = Style::TwoHanded.params();
         two.validate().unwrap();
         assert_eq!(two.to_json()["style"], "two-handed");
-        assert_eq!((two.held, two.contacts, two.velocities), (false, false, false));
+        assert_eq!(
+            (two.held, two.contacts, two.velocities),
+            (false, false, false)
+        );
     }
 
     #[test]
     fn a_file_overrides_the_style_it_names_or_is_given() {
         let p = SimParams::from_json_text(r#"{"cubes": 4}"#, Some(Style::TwoHanded)).unwrap();
-        assert_eq!((p.style, p.cubes, p.frame_rate), (Style::TwoHanded, 4, 100.0));
+        assert_eq!(
+            (p.style, p.cubes, p.frame_rate),
+            (Style::TwoHanded, 4, 100.0)
+        );
         let p = SimParams::from_json_text(r#"{"style": "two-handed", "grip_noise": 0.1}"#, None)
             .unwrap();
-        assert_eq!((p.style, p.grip_noise, p.held), (Style::TwoHanded, 0.1, false));
-        let p = SimParams::from_json_text(r#"{"style": "two-handed"}"#, Some(Style::Paper))
-            .unwrap();
+        assert_eq!(
+            (p.style, p.grip_noise, p.held),
+            (Style::TwoHanded, 0.1, false)
+        );
+        let p =
+            SimParams::from_json_text(r#"{"style": "two-handed"}"#, Some(Style::Paper)).unwrap();
         assert_eq!(p, SimParams::default());
         let e = SimParams::from_json_text("{\n\"cubez\": 4}", Some(Style::TwoHanded)).unwrap_err();
         assert_eq!(e.line(), 2);

@@ -29,12 +29,16 @@ pub fn read_text(path: &Path) -> Result<String, Failure> {
 }
 
 /// The simulator's parameters: the `--params` file's (JSON, docs/recording-format.md), or
-/// the paper study's. A file that is not one is a command line error (36).
-pub fn sim_params(path: Option<&Path>) -> Result<simulate::SimParams, Failure> {
+/// the paper study's; with `style` (`--style`), that style's, the file's fields over them.
+/// A file that is not one is a command line error (36).
+pub fn sim_params(
+    path: Option<&Path>,
+    style: Option<simulate::Style>,
+) -> Result<simulate::SimParams, Failure> {
     let Some(path) = path else {
-        return Ok(simulate::SimParams::default());
+        return Ok(style.unwrap_or_default().params());
     };
-    serde_json::from_str(&read_text(path)?).map_err(|e| {
+    simulate::SimParams::from_json_text(&read_text(path)?, style).map_err(|e| {
         Failure::plain(
             ExitCode::USAGE,
             format!("{}: not a parameter file: {e}", path.display()),

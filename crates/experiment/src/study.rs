@@ -90,9 +90,28 @@ pub struct StudyConditionArgs {
     /// (they are dropped by default).
     #[cfg_attr(feature = "clap", arg(long))]
     pub keep_without_effects: bool,
+    /// The simulated people's style: `paper` (one hand at a time) or `two-handed` (both
+    /// hands at once, cut mid-motion, poses only); default: the parameters' (`paper`).
+    #[cfg_attr(feature = "clap", arg(long, value_name = "NAME"))]
+    pub style: Option<String>,
 }
 
 impl StudyConditionArgs {
+    /// The style `--style` names, if it names one; a name of no style is an
+    /// [`ExperimentError::Options`].
+    pub fn style(&self) -> Result<Option<simulate::Style>, ExperimentError> {
+        (self.style.as_deref())
+            .map(|name| {
+                simulate::Style::from_name(name).ok_or_else(|| {
+                    ExperimentError::Options(format!(
+                        "--style: {name:?} is none of {}",
+                        simulate::Style::names()
+                    ))
+                })
+            })
+            .transpose()
+    }
+
     /// The study of these conditions, writing into `out`, with the simulator's `params`,
     /// its cells run with `grid`. A list that does not read is an
     /// [`ExperimentError::Options`] naming its option; [`study`] checks the values.
@@ -103,6 +122,16 @@ impl StudyConditionArgs {
         grid: GridSettings,
     ) -> Result<StudyOptions, ExperimentError> {
         let sizes = |option: &str, text: &str| crate::sizes(text).map_err(named_option(option));
+        // The style is the parameters' (`simulate::Style::params` and a `--params` file
+        // make them); `--style` must agree with them.
+        if let Some(style) = self.style()? {
+            if style != params.style {
+                return Err(ExperimentError::Options(format!(
+                    "--style {style}: the simulator's parameters are of style {}",
+                    params.style
+                )));
+            }
+        }
         let mut activities: Vec<String> = (self.activities.split(','))
             .map(|a| a.trim().to_string())
             .collect();

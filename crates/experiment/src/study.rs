@@ -697,3 +697,48 @@ fn report_page(
     s.push_str("<h2>Files</h2>\n<ul>\n<li><a href=\"runs.csv\">runs.csv</a>: every run, with its conditions and four times</li>\n<li><a href=\"ratios.csv\">ratios.csv</a>: quartiles of the ratios per condition, planner and measure</li>\n<li><a href=\"results.jsonl\">results.jsonl</a>: every cell's record, one JSON line each (the study resumes from it)</li>\n<li><a href=\"study.json\">study.json</a>: the options</li>\n</ul>\n</body>\n</html>\n");
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn conditions(style: Option<&str>) -> StudyConditionArgs {
+        StudyConditionArgs {
+            seeds: "1".into(),
+            participants: 3,
+            per_participant: 4,
+            hands: "1".into(),
+            distractors: "0".into(),
+            heights: "2".into(),
+            towers: "1".into(),
+            activities: "settled".into(),
+            keep_without_effects: false,
+            style: style.map(str::to_string),
+        }
+    }
+
+    /// `--style` must name a style and agree with the parameters; the cells of a style's
+    /// own parameters carry its name, the default's stay `default`.
+    #[test]
+    fn the_style_names_agree_with_the_parameters() {
+        let grid = || GridSettings::in_process(std::time::Duration::from_secs(1));
+        let two = simulate::Style::TwoHanded.params();
+        let options =
+            (conditions(Some("two-handed")).options("out".into(), two.clone(), grid())).unwrap();
+        assert!(study_grid(&options)
+            .iter()
+            .all(|c| c.conditions.params == "two-handed"));
+        let default = (conditions(None).options("out".into(), Default::default(), grid())).unwrap();
+        assert!(study_grid(&default)
+            .iter()
+            .all(|c| c.conditions.params == "default"));
+        for (style, params) in [
+            (Some("two-handed"), simulate::SimParams::default()),
+            (Some("paper"), two),
+            (Some("three-handed"), simulate::SimParams::default()),
+        ] {
+            let e = (conditions(style).options("out".into(), params, grid())).unwrap_err();
+            assert!(e.to_string().contains("--style"), "{e}");
+        }
+    }
+}

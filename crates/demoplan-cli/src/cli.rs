@@ -253,11 +253,9 @@ pub struct SimulateArgs {
     /// (docs/recording-format.md lists them).
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
-    /// The style of demonstration: `paper` (the paper's study, one hand at a time) or
-    /// `two-handed` (both hands at once, cut mid-motion, poses only); default: the
-    /// `--params` file's, else `paper`.
-    #[arg(long, value_name = "NAME")]
-    pub style: Option<String>,
+    /// `paper` (default: the `--params` file's) or `two-handed` (both hands at once, poses only)
+    #[arg(long, value_name = "NAME", value_parser = simulate::Style::parse)]
+    pub style: Option<simulate::Style>,
 }
 
 /// The options of `inspect`.

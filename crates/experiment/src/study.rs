@@ -92,26 +92,14 @@ pub struct StudyConditionArgs {
     pub keep_without_effects: bool,
     /// The simulated people's style: `paper` (one hand at a time) or `two-handed` (both
     /// hands at once, cut mid-motion, poses only); default: the parameters' (`paper`).
-    #[cfg_attr(feature = "clap", arg(long, value_name = "NAME"))]
-    pub style: Option<String>,
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "NAME", value_parser = simulate::Style::parse)
+    )]
+    pub style: Option<simulate::Style>,
 }
 
 impl StudyConditionArgs {
-    /// The style `--style` names, if it names one; a name of no style is an
-    /// [`ExperimentError::Options`].
-    pub fn style(&self) -> Result<Option<simulate::Style>, ExperimentError> {
-        (self.style.as_deref())
-            .map(|name| {
-                simulate::Style::from_name(name).ok_or_else(|| {
-                    ExperimentError::Options(format!(
-                        "--style: {name:?} is none of {}",
-                        simulate::Style::names()
-                    ))
-                })
-            })
-            .transpose()
-    }
-
     /// The study of these conditions, writing into `out`, with the simulator's `params`,
     /// its cells run with `grid`. A list that does not read is an
     /// [`ExperimentError::Options`] naming its option; [`study`] checks the values.
@@ -124,7 +112,7 @@ impl StudyConditionArgs {
         let sizes = |option: &str, text: &str| crate::sizes(text).map_err(named_option(option));
         // The style is the parameters' (`simulate::Style::params` and a `--params` file
         // make them); `--style` must agree with them.
-        if let Some(style) = self.style()? {
+        if let Some(style) = self.style {
             if style != params.style {
                 return Err(ExperimentError::Options(format!(
                     "--style {style}: the simulator's parameters are of style {}",
@@ -713,7 +701,7 @@ mod tests {
             towers: "1".into(),
             activities: "settled".into(),
             keep_without_effects: false,
-            style: style.map(str::to_string),
+            style: style.and_then(simulate::Style::from_name),
         }
     }
 
@@ -735,7 +723,6 @@ mod tests {
         for (style, params) in [
             (Some("two-handed"), simulate::SimParams::default()),
             (Some("paper"), two),
-            (Some("three-handed"), simulate::SimParams::default()),
         ] {
             let e = (conditions(style).options("out".into(), params, grid())).unwrap_err();
             assert!(e.to_string().contains("--style"), "{e}");

@@ -41,6 +41,11 @@ impl Style {
         Style::ALL.into_iter().find(|s| s.name() == name)
     }
 
+    /// The style of a name, or a message that lists the names (a command line's parser).
+    pub fn parse(name: &str) -> Result<Style, String> {
+        Style::from_name(name).ok_or_else(|| format!("{name:?} is none of {}", Style::names()))
+    }
+
     /// The names, for messages: `paper, two-handed`.
     pub fn names() -> String {
         Style::ALL.map(Style::name).join(", ")
@@ -147,6 +152,15 @@ mod tests {
         let p =
             SimParams::from_json_text(r#"{"style": "two-handed"}"#, Some(Style::Paper)).unwrap();
         assert_eq!(p, SimParams::default());
+        // An empty file is the style's parameters exactly (the CLI reads no file as one).
+        for style in Style::ALL {
+            let p = SimParams::from_json_text("{}", Some(style)).unwrap();
+            assert_eq!(p, style.params());
+        }
+        assert_eq!(
+            SimParams::from_json_text("{}", None).unwrap(),
+            SimParams::default()
+        );
         let e = SimParams::from_json_text("{\n\"cubez\": 4}", Some(Style::TwoHanded)).unwrap_err();
         assert_eq!(e.line(), 2);
     }

@@ -7,17 +7,7 @@ use crate::input;
 use slim::ExitCode;
 
 pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
-    let style = (args.style.as_deref())
-        .map(|name| {
-            simulate::Style::from_name(name).ok_or_else(|| {
-                Failure::plain(
-                    ExitCode::USAGE,
-                    format!("--style: {name:?} is none of {}", simulate::Style::names()),
-                )
-            })
-        })
-        .transpose()?;
-    let mut params = input::sim_params(args.params.as_deref(), style)?;
+    let mut params = input::sim_params(args.params.as_deref(), args.style)?;
     if let Some(c) = args.cubes {
         params.cubes = c;
     }

@@ -11,8 +11,7 @@ use slim::ExitCode;
 
 pub fn run(args: StudyArgs, this: &Relaunch) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let style = (args.conditions.style()).map_err(experiment_failure)?;
-    let params = input::sim_params(args.params.as_deref(), style)?;
+    let params = input::sim_params(args.params.as_deref(), args.conditions.style)?;
     let (limits, fast_downward) = (&args.limits, &args.fast_downward);
     let grid = (args.grid.settings(&args.slurm, fast_downward, limits, this))
         .map_err(experiment_failure)?;

@@ -570,3 +570,18 @@ fn a_damaged_uncompressed_chunk_fails_its_crc() {
         "{text}"
     );
 }
+
+/// The two-handed fixture is written as real labs' bags are: `/tf` and `/tf_static`
+/// alone, one `/tf` message per frame of its recording, no object list.
+#[test]
+fn the_two_handed_bag_has_poses_alone() {
+    let frames = recording_frames("two-handed").len() as u64;
+    let bag = bags::open(&fixtures().join("two-handed.bz2.bag")).unwrap();
+    assert_eq!(bag.format(), Format::Ros1);
+    let topics = bag.topics().unwrap();
+    let listed: Vec<(&str, Option<u64>)> = topics
+        .iter()
+        .map(|t| (t.name.as_str(), t.message_count))
+        .collect();
+    assert_eq!(listed, [("/tf", Some(frames)), ("/tf_static", Some(1))]);
+}

@@ -253,6 +253,9 @@ pub struct SimulateArgs {
     /// (docs/recording-format.md lists them).
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
+    /// `paper` (default: the `--params` file's) or `two-handed` (both hands at once, poses only)
+    #[arg(long, value_name = "NAME", value_parser = simulate::Style::parse)]
+    pub style: Option<simulate::Style>,
 }
 
 /// The options of `inspect`.

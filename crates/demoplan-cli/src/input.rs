@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::diagnostic::Failure;
+use simulate::{SimParams, Style};
 use slim::ExitCode;
 
 /// Reads a text file; a missing or unreadable file is a command line error (exit 36).
@@ -28,18 +29,13 @@ pub fn read_text(path: &Path) -> Result<String, Failure> {
         })
 }
 
-/// The simulator's parameters: the `--params` file's (JSON, docs/recording-format.md), or
-/// the paper study's. A file that is not one is a command line error (36).
-pub fn sim_params(path: Option<&Path>) -> Result<simulate::SimParams, Failure> {
-    let Some(path) = path else {
-        return Ok(simulate::SimParams::default());
-    };
-    serde_json::from_str(&read_text(path)?).map_err(|e| {
-        Failure::plain(
-            ExitCode::USAGE,
-            format!("{}: not a parameter file: {e}", path.display()),
-        )
-    })
+/// The `--params` file's (JSON) simulator parameters over the `style`'s. Not one: exit 36.
+pub fn sim_params(path: Option<&Path>, style: Option<Style>) -> Result<SimParams, Failure> {
+    let text = path.map(read_text).transpose()?;
+    let name = path.map_or(String::new(), |p| p.display().to_string());
+    SimParams::from_json_text(text.as_deref().unwrap_or("{}"), style)
+        .map_err(|e| format!("{name}: not a parameter file: {e}"))
+        .map_err(|m| Failure::plain(ExitCode::USAGE, m))
 }
 
 /// Finds the domain file of a problem by Fast Downward's naming rules

@@ -173,3 +173,86 @@ fn broken_bags_exit_31_naming_file_and_place_and_write_nothing() {
         insta::assert_snapshot!(format!("bag-{case}"), text);
     }
 }
+
+/// The two-handed fixture: a recording of the simulator's `two-handed` style written by
+/// Python's `rosbags` as real labs' bags are, `/tf` poses alone (no grip, no held
+/// object, no contacts). With the default mapping the import finds each hand's grasp
+/// from geometry, and its segments show both hands at work at once: a segment of one hand
+/// with a cube in hand (Put, Stack, Take) overlaps a Reach or a held cube of the other.
+#[test]
+fn a_two_handed_bag_with_poses_alone_imports_with_grasps_from_geometry() {
+    let tmp = TempDir::new("two-handed");
+    let out = demoplan()
+        .arg("import")
+        .arg(bag_fixtures().join("two-handed.bz2.bag"))
+        .arg("-o")
+        .arg(&tmp.0)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", transcript(&out, &tmp.0));
+    assert!(stdout.contains("grasps = \"geometry\""), "{stdout}");
+    let grasps: usize = stdout
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("grasps found: "))
+        .and_then(|n| n.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no grasp count in {stdout}"));
+    assert!(grasps >= 2, "{stdout}");
+
+    let imported = tmp.0.join("two-handed.bz2.jsonl");
+    let text = std::fs::read_to_string(&imported).unwrap();
+    // Poses alone came in: the grips are the import's (0 or 1, from geometry).
+    assert!(!text.contains("\"contacts\""));
+    let segmented = demoplan()
+        .args(["segment", "--json"])
+        .arg(&imported)
+        .output()
+        .unwrap();
+    assert_eq!(segmented.status.code(), Some(0));
+    let doc: serde_json::Value = serde_json::from_slice(&segmented.stdout).unwrap();
+    let segments = doc["files"][0]["segments"].as_array().unwrap();
+    struct Seg<'a> {
+        hand: &'a str,
+        start: f64,
+        end: f64,
+        activity: &'a str,
+        in_hand: Option<&'a str>,
+    }
+    let segs: Vec<Seg<'_>> = segments
+        .iter()
+        .map(|s| Seg {
+            hand: s["hand"].as_str().unwrap(),
+            start: s["start"].as_f64().unwrap(),
+            end: s["end"].as_f64().unwrap(),
+            activity: s["activity"].as_str().unwrap(),
+            in_hand: s["in_hand"].as_str(),
+        })
+        .collect();
+    // Each hand holds a cube at some time, and they hold different cubes.
+    let held = |hand: &str| -> Vec<&str> {
+        let mut cubes: Vec<&str> = (segs.iter())
+            .filter(|s| s.hand == hand)
+            .filter_map(|s| s.in_hand)
+            .collect();
+        cubes.dedup();
+        cubes
+    };
+    let (left, right) = (held("left_hand"), held("right_hand"));
+    assert!(!left.is_empty() && !right.is_empty(), "{left:?} {right:?}");
+    assert!(
+        left.iter().all(|c| !right.contains(c)),
+        "{left:?} {right:?}"
+    );
+    // One hand carries (a cube in hand, moving it: Put or Stack) while the other reaches
+    // or holds its own.
+    let overlap = segs.iter().any(|a| {
+        matches!(a.activity, "Put" | "Stack")
+            && segs.iter().any(|b| {
+                b.hand != a.hand
+                    && (b.activity == "Reach" || b.in_hand.is_some())
+                    && b.start < a.end
+                    && a.start < b.end
+            })
+    });
+    assert!(overlap, "no overlapping activities of the two hands");
+}

@@ -1057,12 +1057,68 @@ fn simulate_rejects_bad_arguments_with_exit_36() {
         &["simulate", "-o", "out", "--params", "missing.json"],
         &["simulate", "-o", "out", "--params", "bad.json"],
         &["simulate", "-o", "out", "--params", "wrong.json"],
+        &["simulate", "-o", "out", "--style", "three-handed"],
+        &[
+            "simulate",
+            "-o",
+            "out",
+            "--style",
+            "two-handed",
+            "--params",
+            "bad.json",
+        ],
     ] {
         refused_in(&tmp, args);
     }
     assert!(
         !tmp.join("out").exists(),
         "wrote output despite bad arguments"
+    );
+}
+
+/// `simulate --style two-handed`: recordings of both hands at once, poses only (no held
+/// object, no contacts, no velocities), 100 Hz, the style in the headers and the
+/// manifest; a `--params` file's fields go over the style's, and the file may name the
+/// style itself.
+#[test]
+fn simulate_two_handed_writes_the_style() {
+    let tmp = tempdir("simulate-two-handed");
+    std::fs::write(tmp.join("four.json"), "{\"cubes\": 4}").unwrap();
+    std::fs::write(tmp.join("named.json"), "{\"style\": \"two-handed\"}").unwrap();
+    let run = |args: &[&str]| {
+        let out = demoplan()
+            .current_dir(&tmp)
+            .args(["simulate", "--participants", "1", "--per-participant", "1"])
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", transcript(&out));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let listing = run(&["--style", "two-handed", "-o", "a"]);
+    assert!(listing.contains("both  hand  2 cubes"), "{listing}");
+    let text = std::fs::read_to_string(tmp.join("a/p01-d01.jsonl")).unwrap();
+    let header: serde_json::Value = serde_json::from_str(text.lines().next().unwrap()).unwrap();
+    assert_eq!(header["meta"]["style"], "two-handed");
+    assert_eq!(header["frame_rate"], 100);
+    for field in ["\"holding\"", "\"contacts\"", "\"vel\""] {
+        assert!(!text.contains(field), "{field} in a two-handed recording");
+    }
+    let manifest: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(tmp.join("a/simulation.json")).unwrap()).unwrap();
+    assert_eq!(manifest["params"]["style"], "two-handed");
+    assert_eq!(manifest["recordings"][0]["hand"], "both");
+
+    run(&["--style", "two-handed", "--params", "four.json", "-o", "b"]);
+    let manifest: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(tmp.join("b/simulation.json")).unwrap()).unwrap();
+    assert_eq!(manifest["params"]["cubes"], 4);
+    assert_eq!(manifest["params"]["held"], false);
+
+    run(&["--params", "named.json", "-o", "c"]);
+    assert_eq!(
+        std::fs::read(tmp.join("a/p01-d01.jsonl")).unwrap(),
+        std::fs::read(tmp.join("c/p01-d01.jsonl")).unwrap()
     );
 }
 
@@ -2347,6 +2403,49 @@ fn a_study_in_child_processes_gives_the_runs_of_one_in_this_process() {
     assert_eq!(reused, 4);
 }
 
+/// `study --style two-handed`: the cells' conditions name the style (their ids differ
+/// from the paper's); `--style paper` is the default, with the same ids as without it.
+#[test]
+fn study_style_names_the_cells_conditions_only_when_not_the_default() {
+    let args = [
+        "--seeds",
+        "1",
+        "--hands",
+        "1",
+        "--heights",
+        "2",
+        "-o",
+        "unused",
+    ];
+    let with = |style: &[&str]| {
+        let out = succeeds(
+            demoplan()
+                .arg("study")
+                .args(args)
+                .args(style)
+                .arg("--list-cells"),
+        );
+        stdout_text(&out)
+    };
+    let (none, paper, two) = (
+        with(&[]),
+        with(&["--style", "paper"]),
+        with(&["--style", "two-handed"]),
+    );
+    assert_eq!(none, paper);
+    assert!(!none.contains("two-handed"), "{none}");
+    assert!(none.contains("params=default;"), "{none}");
+    assert!(two.contains("params=two-handed;"), "{two}");
+    let ids = |text: &str| -> Vec<String> {
+        (text.lines().skip(1))
+            .map(|l| l.split('\t').nth(1).unwrap().to_string())
+            .collect()
+    };
+    let (a, b) = (ids(&none), ids(&two));
+    assert_eq!(a.len(), b.len());
+    assert!(a.iter().all(|id| !b.contains(id)), "{a:?} {b:?}");
+}
+
 #[test]
 fn study_refuses_bad_options_before_writing_anything() {
     let tmp = tempdir("study-options");
@@ -2359,6 +2458,7 @@ fn study_refuses_bad_options_before_writing_anything() {
         (vec!["--activities", "settled,sometimes"], "--activities"),
         (vec!["--heights", "8", "--towers", "4"], "cubes"),
         (vec!["--time-limit", "soon"], "--time-limit"),
+        (vec!["--style", "one-handed"], "--style"),
     ] {
         let out = refused_in(&tmp, &[&["study", "-o", "out"][..], &args].concat());
         let err = stderr_text(&out);

@@ -169,11 +169,16 @@ impl Conditions {
 /// [`Conditions::params`] of the simulator's default parameters.
 pub const DEFAULT_PARAMS: &str = "default";
 
-/// [`Conditions::params`] for a parameter set: `default` for the defaults, else
-/// `params-` and the FNV-1a hash of their JSON.
+/// [`Conditions::params`] for a parameter set: `default` for the defaults, a style's
+/// name (`two-handed`) for that style's parameters ([`simulate::Style::params`]), else
+/// `params-` and the FNV-1a hash of their JSON (which names the style when it is not the
+/// paper's).
 pub fn params_key(params: &simulate::SimParams) -> String {
     if *params == simulate::SimParams::default() {
         return DEFAULT_PARAMS.to_string();
+    }
+    if *params == params.style.params() {
+        return params.style.name().to_string();
     }
     format!(
         "params-{:016x}",
@@ -300,5 +305,18 @@ mod tests {
             assert_eq!(c.height, goal + 1);
         }
         assert_eq!(params_key(&simulate::SimParams::default()), "default");
+    }
+
+    #[test]
+    fn a_style_is_its_own_params_key_and_a_changed_one_a_hash() {
+        let two = simulate::Style::TwoHanded.params();
+        assert_eq!(params_key(&two), "two-handed");
+        let changed = simulate::SimParams { cubes: 4, ..two };
+        assert!(params_key(&changed).starts_with("params-"));
+        let paper_changed = simulate::SimParams {
+            cubes: 4,
+            ..simulate::SimParams::default()
+        };
+        assert_ne!(params_key(&changed), params_key(&paper_changed));
     }
 }

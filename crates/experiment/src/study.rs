@@ -90,6 +90,13 @@ pub struct StudyConditionArgs {
     /// (they are dropped by default).
     #[cfg_attr(feature = "clap", arg(long))]
     pub keep_without_effects: bool,
+    /// The simulated people's style: `paper` (one hand at a time) or `two-handed` (both
+    /// hands at once, cut mid-motion, poses only); default: the parameters' (`paper`).
+    #[cfg_attr(
+        feature = "clap",
+        arg(long, value_name = "NAME", value_parser = simulate::Style::parse)
+    )]
+    pub style: Option<simulate::Style>,
 }
 
 impl StudyConditionArgs {
@@ -103,6 +110,16 @@ impl StudyConditionArgs {
         grid: GridSettings,
     ) -> Result<StudyOptions, ExperimentError> {
         let sizes = |option: &str, text: &str| crate::sizes(text).map_err(named_option(option));
+        // The style is the parameters' (`simulate::Style::params` and a `--params` file
+        // make them); `--style` must agree with them.
+        if let Some(style) = self.style {
+            if style != params.style {
+                return Err(ExperimentError::Options(format!(
+                    "--style {style}: the simulator's parameters are of style {}",
+                    params.style
+                )));
+            }
+        }
         let mut activities: Vec<String> = (self.activities.split(','))
             .map(|a| a.trim().to_string())
             .collect();
@@ -667,4 +684,48 @@ fn report_page(
     );
     s.push_str("<h2>Files</h2>\n<ul>\n<li><a href=\"runs.csv\">runs.csv</a>: every run, with its conditions and four times</li>\n<li><a href=\"ratios.csv\">ratios.csv</a>: quartiles of the ratios per condition, planner and measure</li>\n<li><a href=\"results.jsonl\">results.jsonl</a>: every cell's record, one JSON line each (the study resumes from it)</li>\n<li><a href=\"study.json\">study.json</a>: the options</li>\n</ul>\n</body>\n</html>\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn conditions(style: Option<&str>) -> StudyConditionArgs {
+        StudyConditionArgs {
+            seeds: "1".into(),
+            participants: 3,
+            per_participant: 4,
+            hands: "1".into(),
+            distractors: "0".into(),
+            heights: "2".into(),
+            towers: "1".into(),
+            activities: "settled".into(),
+            keep_without_effects: false,
+            style: style.and_then(simulate::Style::from_name),
+        }
+    }
+
+    /// `--style` must name a style and agree with the parameters; the cells of a style's
+    /// own parameters carry its name, the default's stay `default`.
+    #[test]
+    fn the_style_names_agree_with_the_parameters() {
+        let grid = || GridSettings::in_process(std::time::Duration::from_secs(1));
+        let two = simulate::Style::TwoHanded.params();
+        let options =
+            (conditions(Some("two-handed")).options("out".into(), two.clone(), grid())).unwrap();
+        assert!(study_grid(&options)
+            .iter()
+            .all(|c| c.conditions.params == "two-handed"));
+        let default = (conditions(None).options("out".into(), Default::default(), grid())).unwrap();
+        assert!(study_grid(&default)
+            .iter()
+            .all(|c| c.conditions.params == "default"));
+        for (style, params) in [
+            (Some("two-handed"), simulate::SimParams::default()),
+            (Some("paper"), two),
+        ] {
+            let e = (conditions(style).options("out".into(), params, grid())).unwrap_err();
+            assert!(e.to_string().contains("--style"), "{e}");
+        }
+    }
 }

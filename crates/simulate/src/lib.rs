@@ -39,6 +39,7 @@ mod render;
 mod rng;
 mod script;
 mod study;
+mod style;
 mod truth;
 
 pub use manifest::{
@@ -48,6 +49,7 @@ pub use params::{Interval, ParamError, SimParams};
 pub use render::Frames;
 pub use rng::Rng;
 pub use study::{session, study, Demonstration, Participant, Placement, Side, Study, Target};
+pub use style::Style;
 pub use truth::{
     read_truth, Activity, HandTruth, Phase, TruthError, TruthFrame, TruthHeader, TruthWriter,
     TRUTH_FORMAT_NAME, TRUTH_FORMAT_VERSION,

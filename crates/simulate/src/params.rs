@@ -12,6 +12,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::style::Style;
+
 /// A closed range `[min, max]` to draw from; written as a two-element JSON list. A single
 /// number `x` reads as `[x, x]` (so a parameter that was once a single value, such as
 /// `hover`, still reads from older `--params` files).
@@ -70,6 +72,13 @@ impl From<Interval> for [f64; 2] {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct SimParams {
+    // ----- style -----
+    /// The style of demonstration ([`Style`]): `paper` (the default; not written) or
+    /// `two-handed`. It chooses the script (one hand at a time, or both at once); its
+    /// parameter overrides are [`Style::params`].
+    #[serde(skip_serializing_if = "Style::is_default")]
+    pub style: Style,
+
     // ----- scene -----
     /// Nominal tracker frame rate (Hz); VR headsets run at 90.
     pub frame_rate: f64,
@@ -171,6 +180,15 @@ pub struct SimParams {
     pub start_pause: Interval,
     /// After the last movement (s).
     pub end_pause: Interval,
+    /// Where the recording starts: this fraction of the way into the task's first
+    /// movement (mid-motion, as a real recording started by hand). `[0, 0]` (the default;
+    /// not written): at time 0, before the start pause.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub start_cut: Interval,
+    /// Where the recording ends: this fraction of the way into the last movement (a hand
+    /// still on its way back). `[0, 0]` (the default; not written): `end_pause` after it.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub end_cut: Interval,
     /// Between placements, when the hand went back to rest (s).
     pub between_pause: Interval,
     /// Still after opening the hand, before leaving (s).
@@ -253,8 +271,14 @@ pub struct SimParams {
     pub grip_noise: f64,
     /// Standard deviation of the physics engine's jitter of a resting cube, per axis (m).
     pub cube_jitter: f64,
-    /// Probability that a frame is dropped (a gap in the recording).
+    /// Probability that a frame is dropped (a gap in the recording): that a run of
+    /// dropped frames starts there.
     pub frame_drop: f64,
+    /// Longest run of dropped frames: a run is 1 to this many frames long (uniform). With
+    /// 1 (the default; not written) frames drop one at a time, each on its own chance;
+    /// above 1 the frame after a run is kept, so runs never join.
+    #[serde(skip_serializing_if = "is_one")]
+    pub frame_drop_run: u32,
     /// Standard deviation of a frame's timestamp around its nominal time (s).
     pub time_jitter: f64,
 
@@ -280,6 +304,8 @@ pub struct SimParams {
 impl Default for SimParams {
     fn default() -> SimParams {
         SimParams {
+            style: Style::Paper,
+
             frame_rate: 90.0,
             cubes: 6,
             cube_size: 0.05,
@@ -325,6 +351,8 @@ impl Default for SimParams {
             release_lead: Interval::new(0.04, 0.09),
             start_pause: Interval::new(0.5, 1.5),
             end_pause: Interval::new(0.5, 1.2),
+            start_cut: Interval::new(0.0, 0.0),
+            end_cut: Interval::new(0.0, 0.0),
             between_pause: Interval::new(0.2, 0.8),
             release_pause: Interval::new(0.1, 0.35),
             return_between: Interval::new(0.1, 0.9),
@@ -364,6 +392,7 @@ impl Default for SimParams {
             grip_noise: 0.015,
             cube_jitter: 0.0002,
             frame_drop: 0.003,
+            frame_drop_run: 1,
             time_jitter: 0.0003,
 
             velocities: true,
@@ -376,6 +405,14 @@ impl Default for SimParams {
             toward_speed: 0.02,
         }
     }
+}
+
+fn is_one(x: &u32) -> bool {
+    *x == 1
+}
+
+fn is_zero(i: &Interval) -> bool {
+    i.min == 0.0 && i.max == 0.0
 }
 
 /// A parameter out of its range.
@@ -420,6 +457,8 @@ impl SimParams {
             ("flow_overlap", self.flow_overlap),
             ("start_pause", self.start_pause),
             ("end_pause", self.end_pause),
+            ("start_cut", self.start_cut),
+            ("end_cut", self.end_cut),
             ("between_pause", self.between_pause),
             ("release_pause", self.release_pause),
             ("abort_fraction", self.abort_fraction),
@@ -531,6 +570,8 @@ impl SimParams {
             ("flow_overlap", self.flow_overlap.max),
             ("preshape_at", self.preshape_at),
             ("lift_share", self.lift_share.max),
+            ("start_cut", self.start_cut.max),
+            ("end_cut", self.end_cut.max),
         ] {
             if !(0.0..=1.0).contains(&p) {
                 return Err(err(
@@ -594,6 +635,12 @@ impl SimParams {
             return Err(err(
                 "cube_spacing",
                 "cubes would touch: use at least 1.5 cube sizes",
+            ));
+        }
+        if !(1..=100).contains(&self.frame_drop_run) {
+            return Err(err(
+                "frame_drop_run",
+                format!("{}: between 1 and 100 frames", self.frame_drop_run),
             ));
         }
         if self.frame_rate > 10_000.0 {

@@ -121,6 +121,10 @@ pub struct Frames<'a> {
     step: u64,
     written: u64,
     limit: Option<u64>,
+    /// Dropped frames still to come in the current run.
+    drop_left: u32,
+    /// Whether the frame before was dropped.
+    dropped_last: bool,
     time_rng: Rng,
     cube_rng: Rng,
     hands: [HandSim; 2],
@@ -182,6 +186,8 @@ impl<'a> Frames<'a> {
             step: 0,
             written: 0,
             limit: demo.frame_limit,
+            drop_left: 0,
+            dropped_last: false,
             time_rng: Rng::derive(seed, &[11]),
             cube_rng: Rng::derive(seed, &[12]),
             hands,
@@ -208,6 +214,11 @@ impl<'a> Frames<'a> {
             let k = self.step;
             self.step += 1;
             let nominal = k as f64 * self.dt;
+            if nominal < self.plan.start {
+                // Before the recording starts (mid-motion): the world moves, unseen.
+                self.advance(nominal);
+                continue;
+            }
             let jitter = if k == 0 {
                 0.0
             } else {
@@ -216,7 +227,7 @@ impl<'a> Frames<'a> {
                     .clamp(-0.4 * self.dt, 0.4 * self.dt)
             };
             let t = ((nominal + jitter) / TIME_STEP).round() * TIME_STEP;
-            let dropped = k > 0 && self.time_rng.chance(self.p.frame_drop);
+            let dropped = self.drop(k);
             self.advance(t);
             self.observe(t, frame);
             if dropped {
@@ -226,6 +237,26 @@ impl<'a> Frames<'a> {
             self.written += 1;
             return true;
         }
+    }
+
+    /// Whether frame `k` is dropped: on its own chance, or as part of a run of up to
+    /// `frame_drop_run` frames (after which a frame is kept).
+    fn drop(&mut self, k: u64) -> bool {
+        let run = self.p.frame_drop_run;
+        let dropped = if self.drop_left > 0 {
+            self.drop_left -= 1;
+            true
+        } else if run > 1 && self.dropped_last {
+            false
+        } else {
+            let starts = k > 0 && self.time_rng.chance(self.p.frame_drop);
+            if starts && run > 1 {
+                self.drop_left = self.time_rng.below(run as usize) as u32;
+            }
+            starts
+        };
+        self.dropped_last = dropped;
+        dropped
     }
 
     /// Moves the noise-free world to time `t`.

@@ -89,8 +89,19 @@ pub(crate) struct Plan {
     pub hands: [HandPlan; 2],
     /// Cube positions (centres) and headings at the start.
     pub cubes: Vec<(V3, f64)>,
+    /// When the recording starts (0, or mid-motion: `start_cut`).
+    pub start: f64,
     /// When the recording ends.
     pub end: f64,
+}
+
+/// When the steps of a planned placement happen (s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Timing {
+    /// The hand closes on the cube.
+    pub grasp: f64,
+    /// The hand starts opening to let the cube go.
+    pub release: f64,
 }
 
 /// The cube's heading plus a multiple of 90 degrees, nearest to `reference`.
@@ -119,6 +130,12 @@ pub(crate) struct Planner<'a> {
     hand_pos: [V3; 2],
     free_at: [f64; 2],
     start: Vec<(V3, f64)>,
+    /// Per cube: from when it stands where the plan put it last with no hand on it (a
+    /// hand waits for it before carrying a cube onto it, when `wait_for_support`).
+    ready_at: Vec<f64>,
+    /// Both hands work at once ([`crate::Style::TwoHanded`]): a placement onto a cube
+    /// another hand is still placing waits for it.
+    wait_for_support: bool,
 }
 
 impl<'a> Planner<'a> {
@@ -179,7 +196,9 @@ impl<'a> Planner<'a> {
             hands,
             hand_pos,
             free_at: [0.0, 0.0],
+            ready_at: vec![0.0; cubes.len()],
             start: cubes,
+            wait_for_support: p.style == crate::Style::TwoHanded,
         }
     }
 
@@ -197,6 +216,12 @@ impl<'a> Planner<'a> {
         for f in &mut self.free_at {
             *f = f.max(t);
         }
+    }
+
+    /// Lets time pass before the next placement of one hand (the other may be busy).
+    pub fn wait_hand_until(&mut self, side: Side, t: f64) {
+        let f = &mut self.free_at[side.index()];
+        *f = f.max(t);
     }
 
     /// Cubes with nothing on them.
@@ -254,9 +279,16 @@ impl<'a> Planner<'a> {
     }
 
     /// Plans one placement: `cube` onto `onto` with the hand `side`. `last` sends the
-    /// hand back to rest afterwards.
-    pub fn placement(&mut self, side: Side, cube: usize, onto: Support, last: bool) {
+    /// hand back to rest afterwards. With `wait_for_support`, a hand whose support is
+    /// still being placed by the other hand grasps its cube and holds it still (a Take)
+    /// until that hand has let go and leaves.
+    pub fn placement(&mut self, side: Side, cube: usize, onto: Support, last: bool) -> Timing {
         let p = self.p;
+        // When the support stands ready (never later than now in the paper's style).
+        let ready = match onto {
+            Support::Cube(s) if self.wait_for_support => self.ready_at[s],
+            _ => f64::NEG_INFINITY,
+        };
         let h = side.index();
         let mut t = self.free_at[h];
         let mut pos = self.hand_pos[h];
@@ -267,6 +299,8 @@ impl<'a> Planner<'a> {
             .free_cubes()
             .into_iter()
             .filter(|&c| c != cube && Support::Cube(c) != onto)
+            // Not a cube the other hand is busy with.
+            .filter(|&c| !self.wait_for_support || self.ready_at[c] <= t)
             .collect();
         if !distractors.is_empty() && self.rng.chance(self.who.abort) {
             let x = distractors[self.rng.below(distractors.len())];
@@ -326,12 +360,16 @@ impl<'a> Planner<'a> {
         // The grasp: rest after closing (Reach, Take, Put) or lift on the fly (Put2).
         let hold = self.draw(p.grip_hold);
         let regrasp = self.rng.chance(self.who.regrasp);
-        let rests = regrasp || self.rng.chance(self.who.rest_after_grasp);
+        // A lift on the fly cannot wait: a hand whose support is not ready by then rests.
+        let must_wait = ready > arrive - 0.3;
+        let rests = regrasp || must_wait || self.rng.chance(self.who.rest_after_grasp);
+        let grasp_at;
         // Time for the grip to rise from open to the grab threshold.
         let to_grab = p.grip_close_time * ((hold - open) / (hold - p.grab_grip)).ln();
         let lift_at;
         if rests {
             let close = arrive - self.draw(p.close_lead);
+            grasp_at = close;
             self.mark(h, close, Phase::Grasp, Some(cube), Some(cube));
             self.grip(h, close, hold, p.grip_close_time);
             let pause = self.draw(p.take_pause);
@@ -350,9 +388,9 @@ impl<'a> Planner<'a> {
                 let close_again = reopen + self.rng.uniform(0.5, 0.7);
                 let hold_again = self.draw(p.grip_hold);
                 self.grip(h, close_again, hold_again, p.grip_close_time);
-                lift_at = close_again + to_grab + pause;
+                lift_at = (close_again + to_grab + pause).max(ready);
             } else {
-                lift_at = arrive + pause.max(to_grab + 0.2);
+                lift_at = (arrive + pause.max(to_grab + 0.2)).max(ready);
             }
         } else {
             // The lift starts while the reach still has a fraction `overlap` of its way to
@@ -366,6 +404,7 @@ impl<'a> Planner<'a> {
             // The grip reaches the grab threshold just before the lift starts, while the
             // hand still moves towards the cube.
             let close = lift_at - self.rng.uniform(0.0, 0.04) - to_grab;
+            grasp_at = close;
             self.mark(h, close, Phase::Grasp, Some(cube), Some(cube));
             self.grip(h, close, hold, p.grip_close_time);
         }
@@ -468,6 +507,11 @@ impl<'a> Planner<'a> {
         if self.rng.chance(self.who.adjust) {
             leave_at = self.adjust(h, side, cube, onto, leave_at, hold, to_grab);
         }
+        self.ready_at[cube] = leave_at;
+        let timing = Timing {
+            grasp: grasp_at,
+            release: release_at,
+        };
 
         // The retreat: back to rest, or up and away towards the next cube.
         self.mark(h, leave_at, Phase::Retreat, None, None);
@@ -506,6 +550,7 @@ impl<'a> Planner<'a> {
             // The next reach starts while the hand still rises.
             self.free_at[h] = leave_at + dur * self.rng.uniform(0.5, 0.9);
         }
+        timing
     }
 
     /// Plans an adjustment of `cube`, just put on `onto` by the hand `h`, starting at
@@ -593,13 +638,28 @@ impl<'a> Planner<'a> {
 
     /// Adds the fidgets of resting hands, orders every timeline, and ends the plan
     /// `end_pause` after the last movement.
+    ///
+    /// With `start_cut` (`end_cut`) the recording starts (ends) that fraction of the way
+    /// into the first (last) movement: mid-motion.
     pub fn finish(mut self, end_pause: f64) -> Plan {
         let last = self
             .hands
             .iter()
             .flat_map(|h| h.moves.iter().map(|m| m.start + m.duration))
             .fold(self.now(), f64::max);
-        let end = last + end_pause;
+        let mut end = last + end_pause;
+        let moves = || self.hands.iter().flat_map(|h| h.moves.iter());
+        let first_move = moves().min_by(|a, b| a.start.total_cmp(&b.start)).copied();
+        let last_move = moves()
+            .max_by(|a, b| (a.start + a.duration).total_cmp(&(b.start + b.duration)))
+            .copied();
+        let mut start = 0.0;
+        if let (Some(m), true) = (first_move, self.p.start_cut.max > 0.0) {
+            start = m.start + self.draw(self.p.start_cut) * m.duration;
+        }
+        if let (Some(m), true) = (last_move, self.p.end_cut.max > 0.0) {
+            end = m.start + self.draw(self.p.end_cut) * m.duration;
+        }
         for h in 0..2 {
             let hand = &mut self.hands[h];
             hand.phases.sort_by(|a, b| a.time.total_cmp(&b.time));
@@ -657,6 +717,7 @@ impl<'a> Planner<'a> {
         Plan {
             hands: self.hands,
             cubes: self.start,
+            start,
             end,
         }
     }

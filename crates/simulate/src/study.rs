@@ -6,6 +6,7 @@ use crate::params::{ParamError, SimParams};
 use crate::render::Frames;
 use crate::rng::Rng;
 use crate::script::{Plan, Planner, Support};
+use crate::style::Style;
 use crate::truth::{TruthHeader, TRUTH_FORMAT_NAME, TRUTH_FORMAT_VERSION};
 use geometry::V3;
 
@@ -197,7 +198,7 @@ impl Demonstration {
     pub fn duration(&self) -> f64 {
         match self.frame_limit {
             Some(n) => n as f64 / self.params.frame_rate,
-            None => self.plan.end,
+            None => self.plan.end - self.plan.start,
         }
     }
 
@@ -341,6 +342,11 @@ fn pick(rng: &mut Rng, candidates: &[usize], cubes: &[(V3, f64)], near: V3) -> u
 /// The paper's study: `participants` people, `per_participant` demonstrations each. Each
 /// person does the four tasks (one cube or two, left hand or right) in a random order,
 /// and again in a new order when there are more than four demonstrations.
+///
+/// In the [`Style::TwoHanded`] style every task is a tower of three built with both hands
+/// (two cubes stacked onto a base, one by each hand, the other hand reaching for its cube
+/// while the first still carries and puts its own); the four tasks differ in the hand
+/// that starts (each starts twice).
 pub fn study(
     params: &SimParams,
     seed: u64,
@@ -379,9 +385,10 @@ pub fn study(
             let (count, hand) = order[(di % 4) as usize];
             let id = format!("{}-d{:02}", who.code, di + 1);
             let demo_seed = Rng::derive(seed, &[2, u64::from(pi), u64::from(di)]).next_u64();
-            demos.push(demonstration(
-                params, seed, demo_seed, &who, id, count, hand,
-            )?);
+            demos.push(match params.style {
+                Style::Paper => demonstration(params, seed, demo_seed, &who, id, count, hand)?,
+                Style::TwoHanded => two_handed(params, seed, demo_seed, &who, id, hand)?,
+            });
         }
         people.push(who);
     }
@@ -455,6 +462,87 @@ fn demonstration(
         frame_limit: None,
     };
     demo.header.meta = meta(&demo, seed);
+    Ok(demo)
+}
+
+/// A tower built with both hands: `first` puts a cube onto the base, the other hand a
+/// cube onto that one (and so on, alternating, when there are more). Each next hand
+/// starts reaching while the one before holds its cube (from 0.2 s before its grasp to a
+/// third of the way from its grasp to its release), takes its own cube and holds it still until the cube below is in place and
+/// the other hand leaves. Every hand goes back to rest after its last placement.
+fn two_handed(
+    p: &SimParams,
+    seed: u64,
+    demo_seed: u64,
+    who: &Participant,
+    id: String,
+    first: Side,
+) -> Result<Demonstration, ParamError> {
+    const PLACEMENTS: usize = 2;
+    let mut rng = Rng::derive(demo_seed, &[0]);
+    let cubes = layout(p, &mut rng)?;
+    let all: Vec<usize> = (0..cubes.len()).collect();
+    let other = |s: Side| match s {
+        Side::Left => Side::Right,
+        Side::Right => Side::Left,
+    };
+    let hands: Vec<Side> = (0..PLACEMENTS)
+        .map(|k| if k % 2 == 0 { first } else { other(first) })
+        .collect();
+    let base = all[rng.below(all.len())];
+    let mut chosen = vec![base];
+    for hand in &hands {
+        let rest = V3::new(p.rest_x, hand.sign() * p.rest_y, p.table_height);
+        let free: Vec<usize> = all
+            .iter()
+            .copied()
+            .filter(|c| !chosen.contains(c))
+            .collect();
+        chosen.push(pick(&mut rng, &free, &cubes, rest));
+    }
+    let mut planner = Planner::new(p, who, Rng::derive(demo_seed, &[1]), cubes.clone());
+    planner.wait_until(rng.uniform(p.start_pause.min, p.start_pause.max));
+    let mut placements = Vec::new();
+    let mut before: Option<crate::script::Timing> = None;
+    for (k, &hand) in hands.iter().enumerate() {
+        if let Some(t) = before {
+            // Early enough that the reach ends while the other hand still holds its cube.
+            let latest = t.grasp + 0.35 * (t.release - t.grasp);
+            planner.wait_hand_until(hand, rng.uniform(t.grasp - 0.2, latest));
+        }
+        let (cube, onto) = (chosen[k + 1], chosen[k]);
+        let last = !hands[k + 1..].contains(&hand);
+        before = Some(planner.placement(hand, cube, Support::Cube(onto), last));
+        placements.push(Placement {
+            hand,
+            cube: EntityId((2 + cube) as u32),
+            onto: Target::Cube(EntityId((2 + onto) as u32)),
+        });
+    }
+    let plan = planner.finish(rng.uniform(p.end_pause.min, p.end_pause.max));
+    let task = format!(
+        "Stack two cubes on another cube with both hands, one each, starting with the {} \
+         hand.",
+        first.name()
+    );
+    let mut demo = Demonstration {
+        id: id.clone(),
+        participant: who.clone(),
+        hand: None,
+        placements,
+        header: header(p, &id, &who.code, &task, vec![]),
+        plan,
+        params: p.clone(),
+        seed: demo_seed,
+        frame_limit: None,
+    };
+    demo.header.meta = meta(&demo, seed);
+    demo.header
+        .meta
+        .insert("style".into(), p.style.name().to_string());
+    demo.header
+        .meta
+        .insert("first_hand".into(), first.name().to_string());
     Ok(demo)
 }
 

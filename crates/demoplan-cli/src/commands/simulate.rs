@@ -7,7 +7,7 @@ use crate::input;
 use slim::ExitCode;
 
 pub fn run(args: SimulateArgs) -> Result<ExitCode, Failure> {
-    let mut params = input::sim_params(args.params.as_deref())?;
+    let mut params = input::sim_params(args.params.as_deref(), args.style)?;
     if let Some(c) = args.cubes {
         params.cubes = c;
     }

@@ -11,7 +11,7 @@ use slim::ExitCode;
 
 pub fn run(args: StudyArgs, this: &Relaunch) -> Result<ExitCode, Failure> {
     let started = std::time::Instant::now();
-    let params = input::sim_params(args.params.as_deref())?;
+    let params = input::sim_params(args.params.as_deref(), args.conditions.style)?;
     let (limits, fast_downward) = (&args.limits, &args.fast_downward);
     let grid = (args.grid.settings(&args.slurm, fast_downward, limits, this))
         .map_err(experiment_failure)?;

@@ -2,7 +2,7 @@
 //! simulated studies: what mending has to answer.
 //!
 //! ```text
-//! cargo run --release -p learn --example meaning -- [FIRST_SEED] [COUNT] [runs]
+//! cargo run --release -p learn --example meaning -- [FIRST_SEED] [COUNT] [settled|runs] [mend] [two-handed]
 //! ```
 
 use std::collections::BTreeMap;
@@ -28,7 +28,12 @@ fn main() {
     let mut agree: BTreeMap<(String, String), u64> = BTreeMap::new();
     let mut shown = 0;
     for seed in first..first + count {
-        let Ok(study) = simulate::study(&simulate::SimParams::default(), seed, 3, 4) else {
+        let params = if args.iter().any(|a| a == "two-handed") {
+            simulate::Style::TwoHanded.params()
+        } else {
+            simulate::SimParams::default()
+        };
+        let Ok(study) = simulate::study(&params, seed, 3, 4) else {
             continue;
         };
         for demo in &study.demonstrations {

@@ -9,11 +9,12 @@
 //! other changed fact (the result does not depend on the order of the facts):
 //!
 //! 1. a fact about a hand belongs to that hand;
-//! 2. a fact between two things (`inTouch`, `onTop`) changes because one of them moved:
-//!    it belongs to the activity whose hand held one of them during the activity (or in
-//!    the state it starts from), else to another hand that held one of them meanwhile,
-//!    else to the activity whose hand acted on one of them (a push), else to another hand
-//!    that acted on one meanwhile;
+//! 2. a fact between two things (`inTouch`, `onTop`) changes because one of them moved,
+//!    the upper one (which lands on or leaves the other): it belongs to the activity whose
+//!    hand held that thing during the activity (or in the state it starts from), else to
+//!    another hand that held it meanwhile, else to the activity whose hand acted on it (a
+//!    push), else to another hand that acted on it meanwhile; when no hand did any of
+//!    that to the upper thing, the same order over either thing decides;
 //! 3. anything else no hand caused: a cube tipping over, tracker noise.
 //!
 //! The table and other fixed things are never held or acted on, so nothing reaches
@@ -93,35 +94,68 @@ pub struct Changes {
     pub nobody: Vec<Fact>,
 }
 
-/// The cause of one changed fact, by the rules of the module documentation. `held` and
-/// `acted` are the activity's hand's objects ([`held`], [`Segment::acted`]).
+/// What an activity's hand did, for [`cause`]: the objects it held ([`held`]) and acted
+/// on ([`Segment::acted`]), sorted.
+#[derive(Debug, Clone, Copy)]
+pub struct OwnHand<'a> {
+    /// The hand.
+    pub hand: EntityId,
+    /// Objects it held.
+    pub held: &'a [EntityId],
+    /// Objects it acted on.
+    pub acted: &'a [EntityId],
+}
+
+/// The things whose motion changes a fact between two things: the upper one, which lands
+/// on or leaves the lower (`onTop`'s first argument; for `inTouch`, the one on top of the
+/// other in `start` or `end`, else both).
+fn movers(fact: &Fact, start: &State, end: &State, space: &FactSpace) -> Vec<EntityId> {
+    let (a, b) = (fact.first(), fact.second());
+    let on = |x, y| {
+        let f = Fact::binary(Predicate::OnTop, x, y);
+        space
+            .id(&f)
+            .is_some_and(|id| start.contains(id) || end.contains(id))
+    };
+    match fact.predicate {
+        Predicate::OnTop => vec![a],
+        _ if on(a, b) && !on(b, a) => vec![a],
+        _ if on(b, a) && !on(a, b) => vec![b],
+        _ => vec![a, b],
+    }
+}
+
+/// The cause of one changed fact, by the rules of the module documentation, looking at
+/// the fact and the two states only. Between two things, the hands that held (then
+/// acted on) the thing that moved ([`movers`]) come first, then those of either thing.
 pub fn cause(
     fact: &Fact,
-    hand: EntityId,
-    held: &[EntityId],
-    acted: &[EntityId],
+    own: OwnHand<'_>,
     others: &OtherHands,
+    (start, end): (&State, &State),
     space: &FactSpace,
 ) -> Cause {
     let is_hand = |e: &EntityId| space.hand_index(*e).is_some();
-    if fact.args().contains(&hand) {
+    if fact.args().contains(&own.hand) {
         return Cause::Own;
     }
     if fact.args().iter().any(is_hand) {
         return Cause::Other;
     }
-    let any_in = |set: &[EntityId]| fact.args().iter().any(|a| set.binary_search(a).is_ok());
-    if any_in(held) {
-        Cause::Own
-    } else if any_in(&others.held) {
-        Cause::Other
-    } else if any_in(acted) {
-        Cause::Own
-    } else if any_in(&others.acted) {
-        Cause::Other
-    } else {
-        Cause::Nobody
+    let order: [(&[EntityId], Cause); 4] = [
+        (own.held, Cause::Own),
+        (&others.held, Cause::Other),
+        (own.acted, Cause::Own),
+        (&others.acted, Cause::Other),
+    ];
+    for things in [movers(fact, start, end, space), fact.args().to_vec()] {
+        for (set, cause) in order {
+            if things.iter().any(|t| set.binary_search(t).is_ok()) {
+                return cause;
+            }
+        }
     }
+    Cause::Nobody
 }
 
 /// Every fact that differs between `start` and `end`, split by [`cause`].
@@ -136,7 +170,12 @@ pub fn changes(
     let mut out = Changes::default();
     let (gone, come) = (start.difference(end), end.difference(start));
     for f in gone.facts(space).chain(come.facts(space)) {
-        match cause(&f, activity.hand, &held, &activity.acted, others, space) {
+        let own = OwnHand {
+            hand: activity.hand,
+            held: &held,
+            acted: &activity.acted,
+        };
+        match cause(&f, own, others, (start, end), space) {
             Cause::Own => out.own.push(f),
             Cause::Other => out.other.push(f),
             Cause::Nobody => out.nobody.push(f),
@@ -284,6 +323,31 @@ pub(crate) mod tests {
             dels,
             ["inHand(?h, ?c1)", "inTouch(?c1, ?t)", "onTop(?c1, ?t)"]
         );
+    }
+
+    /// The right hand still rests on the cube it just stacked when the left hand sets its
+    /// cube on top: the landing is the left hand's, whose cube moved.
+    #[test]
+    fn a_landing_belongs_to_the_hand_that_held_the_upper_cube() {
+        let header = scene(2);
+        let space = FactSpace::new(&header);
+        let table = 4;
+        let mut before = on(2, table).to_vec();
+        before.push(Fact::binary(Predicate::InHand, RIGHT, EntityId(2)));
+        before.push(Fact::binary(Predicate::InHand, LEFT, EntityId(3)));
+        let mut after = on(2, table).to_vec();
+        after.extend(on(3, 2));
+        let (start, end) = (state(&space, &before), state(&space, &after));
+        let rest = activity(RIGHT, Activity::Take, &[2], &[], start.clone(), end.clone());
+        let stack = activity(LEFT, Activity::Stack, &[3], &[2], start, end);
+        let all = [stack.clone(), rest.clone()];
+        let own = |a: &Segment| {
+            let others = OtherHands::during(a, &all, &space);
+            changes(a, &a.start_state, &a.end_state, &others, &space).own
+        };
+        let landing = on(3, 2);
+        assert!(own(&rest).iter().all(|f| !landing.contains(f)));
+        assert!(landing.iter().all(|f| own(&stack).contains(f)));
     }
 
     /// A cube that tips off the table's edge while no hand is near is nobody's change.

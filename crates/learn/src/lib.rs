@@ -42,7 +42,7 @@ mod timeline;
 mod update;
 
 pub use cards::{cards_markdown, cards_text, domain_text, levels_table, summary_table};
-pub use cause::{cause, changes, held, Cause, Changes, OtherHands};
+pub use cause::{cause, changes, held, Cause, Changes, OtherHands, OwnHand};
 pub use domain::{
     action, chosen_domain, domain, domain_name, levels, operator_subset, paper_goal_tower,
     pddl_predicate, per_type, problem, tower_goal, DomainChoice, DomainOptions, EmptyDomain, Level,

@@ -27,7 +27,7 @@ use std::time::{Duration, Instant};
 use learn::{DomainOptions, Library, Ranked};
 use slim::{plan_level, Backend, ExitCode, LevelResult, Outcome, RunLimits};
 
-pub use text::{attempt_note, set_aside_list};
+pub use text::{attempt_lines, attempt_note, set_aside_list};
 
 /// Whether [`solve`] executes its plans.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -38,6 +38,28 @@ pub enum Execution {
     /// Algorithm 1 alone, as [`slim::solve`]: the first plan is the answer
     /// (`demoplan solve --no-execute`).
     Off,
+}
+
+/// `demoplan solve --no-execute`, declared here beside what it switches off.
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct ExecutionArgs {
+    /// Do not execute plans in the cube world: the first plan found is the answer, as in
+    /// the paper's Algorithm 1 (by default each plan is executed, an operator whose step
+    /// fails is set aside and the level searched again).
+    #[cfg_attr(feature = "clap", arg(long))]
+    pub no_execute: bool,
+}
+
+impl ExecutionArgs {
+    /// The [`Execution`] the options ask for.
+    pub fn execution(self) -> Execution {
+        if self.no_execute {
+            Execution::Off
+        } else {
+            Execution::On
+        }
+    }
 }
 
 /// An operator set aside for this problem: whose step failed, where, and how.

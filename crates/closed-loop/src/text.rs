@@ -27,6 +27,40 @@ pub fn attempt_note(attempt: &Attempt) -> Option<String> {
     }
 }
 
+/// An attempt's row of the level table ([`slim::level_row`]) and its note
+/// ([`attempt_note`]), with their line endings: what `demoplan solve` prints as each
+/// attempt ends.
+pub fn attempt_lines(attempt: &Attempt) -> String {
+    let mut out = slim::level_row(&attempt.level);
+    out.push_str(&attempt_note(attempt).unwrap_or_default());
+    out
+}
+
+impl Attempt {
+    /// The line of a plan found (without line ending): its level, operators, steps and
+    /// cost, and where it was written.
+    pub fn solution_line(&self, plan_file: &std::path::Path) -> String {
+        let level = &self.level;
+        format!(
+            "Solution found at priority {} ({} operators): {} step(s), cost {}; plan written to {}",
+            level.prio,
+            level.operators,
+            level.run.plan.len(),
+            level.run.cost.unwrap_or(0),
+            plan_file.display()
+        )
+    }
+
+    /// The line `demoplan solve` prints on standard error for a run that failed (with
+    /// its line ending); empty for any other.
+    pub fn error_line(&self) -> String {
+        match &self.level.run.error {
+            Some(e) => format!("error at priority {}: {e}\n", self.level.prio),
+            None => String::new(),
+        }
+    }
+}
+
 /// The operators set aside, one line each (with its line ending): name, id, the level
 /// and step that failed and why; `"nothing\n"`-free: empty when none was.
 pub fn set_aside_list(solved: &Solved) -> String {
@@ -63,6 +97,23 @@ impl Solved {
             out.push_str(&format!("Some level also reached {which}.\n"));
         }
         out
+    }
+
+    /// What a solve without a plan says (with its line ending): the operators set aside
+    /// when no plan executed, else which limit some level reached, else that every level
+    /// is unsolvable (the sentences of Algorithm 1 alone).
+    pub fn no_plan_text(&self) -> String {
+        match self.verdict() {
+            crate::Verdict::Plan(_) => String::new(),
+            crate::Verdict::NoExecutablePlan => self.no_executable_plan_text(),
+            crate::Verdict::LimitReached => format!(
+                "No plan: some level reached {} (exit 12).\n",
+                self.limits_reached().unwrap_or("its limit")
+            ),
+            crate::Verdict::Unsolvable => {
+                "No plan on any level: every level is unsolvable.\n".to_string()
+            }
+        }
     }
 
     /// The line after the table: the time over every attempt, and with execution the

@@ -317,7 +317,14 @@ pub fn solve(
             };
             if execution == Execution::On && attempt.level.run.outcome == Outcome::Solved {
                 let t = Instant::now();
-                attempt.check = check(&attempt.level, &operators, problem)?;
+                let level = &attempt.level;
+                attempt.check = check(
+                    level.prio,
+                    &level.domain,
+                    &operators,
+                    problem,
+                    &level.run.plan,
+                )?;
                 attempt.execution_time = t.elapsed();
                 execution_time += attempt.execution_time;
             }
@@ -353,18 +360,20 @@ enum Next {
     Done,
 }
 
-/// Executes a level's plan and says what happened; a failing step's operator is found
-/// among `operators` by its action's name.
-fn check(
-    level: &LevelResult,
+/// Executes `plan`, found at priority `prio` on `domain` (the domain of `operators`),
+/// and says what happened; a failing step's operator is found among `operators` by its
+/// action's name. What [`solve`] does with each plan, for callers that run Algorithm 1
+/// their own way (the experiment's cells, under one time budget).
+pub fn check(
+    prio: usize,
+    domain: &pddl::Domain,
     operators: &[Ranked<'_>],
     problem: &pddl::Problem,
+    plan: &[pddl::Step],
 ) -> Result<Check, LoopError> {
-    let report = cubeworld::execute(&level.domain, problem, &level.run.plan).map_err(|e| {
-        LoopError::Plan {
-            prio: level.prio,
-            message: e.to_string(),
-        }
+    let report = cubeworld::execute(domain, problem, plan).map_err(|e| LoopError::Plan {
+        prio,
+        message: e.to_string(),
     })?;
     let Some(i) = report.first_failure() else {
         return Ok(if report.goal.reached {
@@ -380,13 +389,13 @@ fn check(
         .iter()
         .find(|r| r.name() == step.name)
         .ok_or_else(|| LoopError::Plan {
-            prio: level.prio,
+            prio,
             message: format!("step {}: no operator is named {}", step.index, step.name),
         })?;
     Ok(Check::StepFailed(SetAside {
         name: operator.name(),
         id: operator.operator().id(),
-        prio: level.prio,
+        prio,
         step: step.index,
         action: step.action_text(),
         promised: step.promised(),

@@ -52,7 +52,14 @@ def solve(
     keep_without_effects: bool = False,
     time_limit: Optional[float] = None,
     memory_limit: Optional[int] = None,
-) -> Tuple[List[Tuple[int, int, str, Optional[str], Optional[int], Optional[int], float]], float]: ...
+    execute: bool = True,
+) -> Tuple[
+    List[Tuple[int, int, str, Optional[str], Optional[int], Optional[int], float, Optional[str]]],
+    float,
+    List[Tuple[str, str, int, int, str, List[str], List[str], str]],
+    float,
+    Optional[str],
+]: ...
 def read_poses(path: str) -> Tuple[List[str], List[float], List[float]]: ...
 def learn(
     library: _Library, files: List[str], folder: str, mapping: Optional[str] = None

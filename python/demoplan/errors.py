@@ -4,7 +4,10 @@ for the same failure (README, "Exit codes")."""
 
 from __future__ import annotations
 
-from typing import Optional
+from typing import TYPE_CHECKING, List, Optional
+
+if TYPE_CHECKING:
+    from demoplan.learning import SetAside, Solved
 
 
 class DemoplanError(Exception):
@@ -48,6 +51,24 @@ class MemoryLimit(DemoplanError):
     """The memory limit was reached before a plan was found (exit code 22)."""
 
 
+class NoExecutablePlan(DemoplanError):
+    """:func:`demoplan.solve` found plans, and the cube world executed none of them
+    (exit code 45, not one of Fast Downward's). ``set_aside`` lists the operators set
+    aside for the problem, each with the step that failed, the facts it promised and
+    what the world gave; ``solved`` is the whole result, every attempt included."""
+
+    def __init__(
+        self,
+        message: str,
+        exit_code: int = 45,
+        set_aside: "Optional[List[SetAside]]" = None,
+        solved: "Optional[Solved]" = None,
+    ) -> None:
+        super().__init__(message, exit_code)
+        self.set_aside = list(set_aside) if set_aside is not None else []
+        self.solved = solved
+
+
 class Cancelled(DemoplanError):
     """The run was cancelled (Ctrl-C reaches Python as KeyboardInterrupt instead; this
     is raised when the cancel flag was set by other means)."""
@@ -63,6 +84,7 @@ _BY_EXIT_CODE = {
     33: InputError,
     34: Unsupported,
     36: InputError,
+    45: NoExecutablePlan,
 }
 
 

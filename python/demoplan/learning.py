@@ -14,7 +14,7 @@ import tempfile
 from typing import TYPE_CHECKING, Any, Iterable, List, Optional, Sequence
 
 from demoplan import _demoplan
-from demoplan.errors import DemoplanError, error_for_exit_code
+from demoplan.errors import DemoplanError, NoExecutablePlan, error_for_exit_code
 from demoplan.planning import Source, _read
 
 if TYPE_CHECKING:
@@ -153,9 +153,13 @@ class Library:
 
 @dataclasses.dataclass(frozen=True)
 class LevelResult:
-    """One level tried by :func:`solve`: its priority, its number of operators, how its
-    run ended (``solved``, ``unsolvable``, ``relaxed-unreachable``, ``limit``,
-    ``memory``), the plan and its cost when solved, expansions and seconds."""
+    """One planning run of :func:`solve`: its priority, its number of operators (without
+    those set aside), how its run ended (``solved``, ``unsolvable``,
+    ``relaxed-unreachable``, ``limit``, ``memory``), the plan and its cost when solved,
+    expansions and seconds, and what executing the plan in the cube world gave:
+    ``executed``, ``step-failed`` (an operator was set aside and the level searched
+    again), ``goal-not-reached`` (the loop widened), or ``None`` (no plan, or
+    ``execute=False``)."""
 
     prio: int
     operators: int
@@ -164,19 +168,51 @@ class LevelResult:
     cost: Optional[int]
     expansions: Optional[int]
     seconds: float
+    execution: Optional[str] = None
+
+
+@dataclasses.dataclass(frozen=True)
+class SetAside:
+    """An operator :func:`solve` set aside for the problem: its name and id, the level
+    and the step (1-based) of the plan that failed, the step as a plan line, the facts
+    it promised that the world did not give (``(not ...)`` for a delete), the grounded
+    facts over the step's objects, and the whole reason in ``demoplan execute``'s words."""
+
+    name: str
+    id: str
+    prio: int
+    step: int
+    action: str
+    promised: List[str]
+    found: List[str]
+    why: str
 
 
 @dataclasses.dataclass(frozen=True)
 class Solved:
-    """The result of Algorithm 1: every level tried, the cumulative time over all of
-    them (failed ones included), and the level that gave the plan, if any."""
+    """The result of Algorithm 1 with execution in the loop: every planning run (a level
+    searched again after an operator was set aside appears again), the cumulative time
+    over all of them (failed ones and executions included), the operators set aside, the
+    seconds spent executing plans, and the run that gave the plan, if any."""
 
     levels: List[LevelResult]
     cumulative_seconds: float
+    set_aside: List[SetAside] = dataclasses.field(default_factory=list)
+    execution_seconds: float = 0.0
 
     @property
     def plan_level(self) -> Optional[LevelResult]:
-        return next((level for level in self.levels if level.outcome == "solved"), None)
+        """The run whose plan is the answer: the last, when it is solved and its plan
+        executed (or was not executed)."""
+        last = self.levels[-1] if self.levels else None
+        if last is not None and last.outcome == "solved" and last.execution in (None, "executed"):
+            return last
+        return None
+
+    @property
+    def replans(self) -> int:
+        """Plans that failed execution, each followed by another search."""
+        return sum(1 for level in self.levels if level.execution in ("step-failed", "goal-not-reached"))
 
 
 def solve(
@@ -186,15 +222,36 @@ def solve(
     time_limit: Optional[float] = None,
     memory_limit: Optional[int] = None,
     keep_without_effects: bool = False,
+    execute: bool = True,
 ) -> Solved:
-    """The paper's Algorithm 1 (``demoplan solve``): plans ``problem`` (PDDL text or a
-    path) on the library's levels, priority 1 upwards, until one gives a plan. The
-    limits are per level. The GIL is released."""
+    """The paper's Algorithm 1 with execution in the loop (``demoplan solve``): plans
+    ``problem`` (PDDL text or a path) on the library's levels, priority 1 upwards, until
+    one gives a plan, and executes each plan in the cube world; an operator whose step
+    fails is set aside and the level searched again (docs/execution.md). Raises
+    :class:`~demoplan.errors.NoExecutablePlan` when plans were found and none executes,
+    and :class:`~demoplan.errors.InputError` for a scene the cube world cannot lay out.
+    ``execute=False`` is Algorithm 1 alone (``--no-execute``). The limits are per
+    planning run. The GIL is released."""
     text, name = _read(problem, "problem")
-    rows, cumulative = _demoplan.solve(
-        library._inner, text, name, search, keep_without_effects, time_limit, memory_limit
+    rows, cumulative, aside, execution_seconds, none = _demoplan.solve(
+        library._inner,
+        text,
+        name,
+        search,
+        keep_without_effects,
+        time_limit,
+        memory_limit,
+        execute,
     )
-    return Solved([LevelResult(*row) for row in rows], cumulative)
+    solved = Solved(
+        [LevelResult(*row) for row in rows],
+        cumulative,
+        [SetAside(*a) for a in aside],
+        execution_seconds,
+    )
+    if none is not None:
+        raise NoExecutablePlan(none.rstrip(), 45, solved.set_aside, solved)
+    return solved
 
 
 def simulate(

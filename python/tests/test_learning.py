@@ -90,12 +90,56 @@ def test_levels_domains_and_algorithm_1(recordings: List[pathlib.Path]) -> None:
     problem = demoplan.tower_problem(["cube_1", "cube_2"])
     full = demoplan.plan(domain, problem)
     solved = demoplan.solve(library, problem)
-    assert [r.prio for r in solved.levels] == [level.prio for level in levels][: len(solved.levels)]
+    # Priorities in order (a level searched again after the execution loop set an
+    # operator aside appears again).
+    tried = list(dict.fromkeys(r.prio for r in solved.levels))
+    assert tried == [level.prio for level in levels][: len(tried)]
     level = solved.plan_level
     assert level is not None and level.plan is not None and level.cost is not None
     # A slim level's plan costs at least the full domain's optimum.
     assert level.cost >= full.cost
     assert demoplan.validate(domain, problem, level.plan).valid
+    # Executed in the cube world, by default.
+    assert level.execution == "executed"
+
+
+FIXTURES = pathlib.Path(__file__).resolve().parents[2] / "crates" / "closed-loop" / "tests" / "fixtures"
+
+
+def test_solve_sets_aside_an_operator_whose_step_fails() -> None:
+    library = demoplan.Library.load(FIXTURES / "broken-idle-library.json")
+    problem = demoplan.tower_problem(paper_goal=1, cubes=3, hands=1)
+    solved = demoplan.solve(library, problem)
+    assert [(r.prio, r.execution) for r in solved.levels] == [(1, "step-failed"), (1, "executed")]
+    assert [s.name for s in solved.set_aside] == ["idle"]
+    aside = solved.set_aside[0]
+    assert aside.step == 1 and aside.action.startswith("(idle left_hand cube_")
+    assert any(f.startswith("(inhand left_hand") for f in aside.promised)
+    assert not any(f.startswith("(inhand") for f in aside.found)
+    assert solved.replans == 1 and solved.execution_seconds > 0
+    level = solved.plan_level
+    assert level is not None and level.plan is not None
+    assert "(idle " not in level.plan
+    # Without execution: Algorithm 1's plan, with the idle, and nothing set aside.
+    plain = demoplan.solve(library, problem, execute=False)
+    assert plain.plan_level is not None and plain.plan_level.plan is not None
+    assert "(idle " in plain.plan_level.plan
+    assert plain.set_aside == [] and plain.levels[0].execution is None
+
+
+def test_no_executable_plan_is_an_exception_with_what_was_set_aside() -> None:
+    library = demoplan.Library.load(FIXTURES / "no-executable-library.json")
+    problem = demoplan.tower_problem(paper_goal=1, cubes=3, hands=1)
+    with pytest.raises(demoplan.NoExecutablePlan) as raised:
+        demoplan.solve(library, problem)
+    error = raised.value
+    assert isinstance(error, demoplan.DemoplanError)
+    assert error.exit_code == 45
+    assert [s.name for s in error.set_aside] == ["idle"]
+    assert str(error).startswith("No executable plan")
+    assert error.solved is not None and error.solved.plan_level is None
+    # Without execution the same library plans.
+    assert demoplan.solve(library, problem, execute=False).plan_level is not None
 
 
 def test_damaged_library_names_its_line(tmp_path: pathlib.Path) -> None:

@@ -43,6 +43,7 @@ def test_errors_carry_their_kind_and_exit_code() -> None:
         33: demoplan.InputError,
         34: demoplan.Unsupported,
         36: demoplan.InputError,
+        45: demoplan.NoExecutablePlan,
     }
     for code, cls in cases.items():
         error = error_for_exit_code(code, "error: what is wrong\n  --> where\n")

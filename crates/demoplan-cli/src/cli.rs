@@ -117,11 +117,11 @@ pub enum Command {
     /// until a plan is found.
     ///
     /// A level whose goal is unreachable even when deletes are ignored is rejected before
-    /// search; other levels are searched until proven unsolvable or their time or memory
-    /// limit. Prints per level operators, outcome, time, expansions and plan cost, and the
-    /// cumulative time over all levels. Exit 0 with a plan, 11 when every level is
-    /// unsolvable, 12 when none gave a plan and some level reached its time or memory
-    /// limit.
+    /// search; others are searched until proven unsolvable or their time or memory limit.
+    /// Each plan is executed in the cube world: an operator whose step fails is set aside
+    /// and the level searched again (not with --no-execute). Prints per level operators,
+    /// outcome, time, expansions, cost, failing steps and the cumulative time. Exit 0 with
+    /// a plan, 45 when no plan executes, 11 when every level is unsolvable, 12 on a limit.
     Solve(SolveArgs),
     /// Reproduce the paper's experiment: simulate the 12 demonstrations, learn the
     /// library, build every priority domain, plan the five goals on each with
@@ -495,6 +495,8 @@ pub struct SolveArgs {
     /// Keep operators that change nothing in the domains.
     #[arg(long)]
     pub keep_without_effects: bool,
+    #[command(flatten)]
+    pub execution: closed_loop::ExecutionArgs,
 }
 
 /// The options of `execute`.

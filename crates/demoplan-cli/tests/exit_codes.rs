@@ -106,6 +106,22 @@ fn case(code: &str, dir: &Path) -> Option<Output> {
                 .arg(goal)
                 .args(["--time-limit", "0s"]))
         }
+        "45" => {
+            // Its only way to pick a cube up is an Idle that adds inHand: the plan fails
+            // in the cube world, and without that operator there is none.
+            let library =
+                workspace().join("crates/closed-loop/tests/fixtures/no-executable-library.json");
+            let goal = dir.join("goal-45.pddl");
+            let made = run(demoplan()
+                .args(["problem", "--paper-goal", "1", "--cubes", "3", "-o"])
+                .arg(&goal));
+            assert!(made.status.success(), "{made:?}");
+            run(demoplan()
+                .current_dir(dir)
+                .arg("solve")
+                .arg(library)
+                .arg(goal))
+        }
         "22" => {
             let wide = dir.join("wide");
             std::fs::create_dir_all(&wide).unwrap();

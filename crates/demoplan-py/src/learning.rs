@@ -1,5 +1,6 @@
 //! The learning side for Python: the operator library (`learn::Library`), learning into
-//! it (`learn::Update`), its levels and domains, Algorithm 1 (`slim::solve`), simulated
+//! it (`learn::Update`), its levels and domains, Algorithm 1 with execution in the loop
+//! (`closed_loop::solve`), simulated
 //! demonstrations (`simulate::study`), tower problems (`learn::Tower`), and recordings
 //! read as arrays. Conversions only; the library crates compute everything, and bad
 //! input is reported with the command line's renderers, as its commands report it.
@@ -155,13 +156,32 @@ type LevelRow = (
     Option<u64>,
     Option<u64>,
     f64,
+    Option<&'static str>,
 );
 
-/// Algorithm 1 on `problem` (PDDL text named `problem_name`) with the library's levels,
-/// each run with `search` under the limits; returns every level tried and the
-/// cumulative seconds. The GIL is released.
+/// An operator the execution loop set aside: name, id, priority, step, action, the
+/// facts promised, the facts found, and why.
+type SetAsideRow = (
+    String,
+    String,
+    usize,
+    usize,
+    String,
+    Vec<String>,
+    Vec<String>,
+    String,
+);
+
+/// What `solve` returns: every attempt, the cumulative seconds, the operators set aside,
+/// the seconds spent executing plans, and the text of "no executable plan" if so.
+type SolveAnswer = (Vec<LevelRow>, f64, Vec<SetAsideRow>, f64, Option<String>);
+
+/// Algorithm 1 with execution in the loop (`closed_loop::solve`; `execute=False`:
+/// Algorithm 1 alone) on `problem` (PDDL text named `problem_name`) with the library's
+/// levels, each run with `search` under the limits. A scene the cube world cannot lay
+/// out is an input error (exit 31). The GIL is released.
 #[pyfunction]
-#[pyo3(signature = (library, problem, problem_name, search, keep_without_effects=false, time_limit=None, memory_limit=None))]
+#[pyo3(signature = (library, problem, problem_name, search, keep_without_effects=false, time_limit=None, memory_limit=None, execute=true))]
 #[allow(clippy::too_many_arguments)]
 pub fn solve(
     py: Python<'_>,
@@ -172,9 +192,10 @@ pub fn solve(
     keep_without_effects: bool,
     time_limit: Option<f64>,
     memory_limit: Option<u64>,
-) -> PyResult<(Vec<LevelRow>, f64)> {
+    execute: bool,
+) -> PyResult<SolveAnswer> {
     let time = crate::seconds(py, time_limit)?;
-    let answer = py.detach(|| -> Result<(Vec<LevelRow>, f64), Failure> {
+    let answer = py.detach(|| -> Result<SolveAnswer, Failure> {
         let config = search::parse_search(&search)
             .map_err(|e| Failure::plain(ExitCode::SEARCH_INPUT_ERROR, format!("search: {e}")))?;
         let parsed = pddl::parse_problem(&problem)
@@ -184,18 +205,26 @@ pub fn solve(
             memory_bytes: memory_limit,
             memory: Some(slim::MemoryProbe::counting()),
         };
-        let solved = slim::solve(
+        let execution = if execute {
+            closed_loop::Execution::On
+        } else {
+            closed_loop::Execution::Off
+        };
+        let solved = closed_loop::solve(
             &library.inner,
             domain_options(keep_without_effects),
             &parsed,
             &slim::Backend::Demoplan(config.into()),
             limits,
+            execution,
             |_| {},
-        );
+        )
+        .map_err(|e| Failure::plain(e.exit_code(), format!("{problem_name}: {e}")))?;
         let rows = solved
-            .levels
+            .attempts
             .iter()
-            .map(|l| {
+            .map(|a| {
+                let l = &a.level;
                 (
                     l.prio,
                     l.operators,
@@ -204,10 +233,40 @@ pub fn solve(
                     l.run.cost,
                     l.run.expansions,
                     l.run.total_time.as_secs_f64(),
+                    match a.check {
+                        closed_loop::Check::NotRun => None,
+                        closed_loop::Check::Executed => Some("executed"),
+                        closed_loop::Check::StepFailed(_) => Some("step-failed"),
+                        closed_loop::Check::GoalNotReached { .. } => Some("goal-not-reached"),
+                    },
                 )
             })
             .collect();
-        Ok((rows, solved.cumulative.as_secs_f64()))
+        let set_aside = solved
+            .set_aside()
+            .into_iter()
+            .map(|s| {
+                (
+                    s.name.clone(),
+                    s.id.clone(),
+                    s.prio,
+                    s.step,
+                    s.action.clone(),
+                    s.promised.clone(),
+                    s.found.clone(),
+                    s.why.clone(),
+                )
+            })
+            .collect();
+        let none = matches!(solved.verdict(), closed_loop::Verdict::NoExecutablePlan)
+            .then(|| solved.no_executable_plan_text());
+        Ok((
+            rows,
+            solved.cumulative.as_secs_f64(),
+            set_aside,
+            solved.execution_time.as_secs_f64(),
+            none,
+        ))
     });
     answer.map_err(|f| failure_from(py, f))
 }

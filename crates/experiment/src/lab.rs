@@ -10,7 +10,7 @@ use segment::ActivityTree;
 use slim::{Backend, FastDownward, MemoryProbe, Outcome, PlanRun, RunLimits};
 
 use crate::cell::{params_key, Cell, Conditions, LevelChoice, Planner};
-use crate::record::{RunRecord, Times, WideningStep};
+use crate::record::{RunRecord, SetAsideRecord, Times, WideningStep};
 use crate::ExperimentError;
 
 /// Where the cells of a grid are computed: the simulator's parameters every cell's
@@ -150,7 +150,12 @@ impl Planners {
     /// ... until a level gives a plan, each level with what is left of the budget, so
     /// that its cumulative time is comparable with one run on the full domain. A level
     /// that proves there is no plan passes the rest of the budget on; a level that hits
-    /// the limit ends the widening (a wider domain only searches more).
+    /// the limit ends the widening (a wider domain only searches more). Execution is in
+    /// the loop, as in `demoplan solve`: a plan the cube world does not execute sets
+    /// its failing step's operator aside (recorded in `set_aside`, counted in
+    /// `replans`) and the level is searched again without it, within the same budget;
+    /// a plan whose steps execute but whose goal does not widens. With no executable
+    /// plan the record has no plan, and the outcome of the last level tried.
     fn algorithm1(
         &self,
         cell: &Cell,
@@ -167,77 +172,112 @@ impl Planners {
         } else {
             Outcome::Unsolvable
         };
-        for (i, level) in all.iter().enumerate() {
-            let left = budget - times.total_s;
-            if left <= 0.0 {
-                outcome = Outcome::TimeLimit;
-                break;
-            }
-            let domain = learn::domain("demoplan", &level.operators);
-            let sibling = |choice: LevelChoice| {
-                known.get(
-                    &Cell {
-                        level: choice,
-                        ..cell.clone()
+        // Operators the execution loop set aside for this problem (their ids).
+        let mut aside: Vec<String> = Vec::new();
+        'levels: for (i, level) in all.iter().enumerate() {
+            loop {
+                let left = budget - times.total_s;
+                if left <= 0.0 {
+                    outcome = Outcome::TimeLimit;
+                    break 'levels;
+                }
+                let operators: Vec<learn::Ranked<'_>> = level
+                    .operators
+                    .iter()
+                    .filter(|r| !aside.contains(&r.operator().id()))
+                    .copied()
+                    .collect();
+                let domain = learn::domain("demoplan", &operators);
+                let sibling = |choice: LevelChoice| {
+                    known.get(
+                        &Cell {
+                            level: choice,
+                            ..cell.clone()
+                        }
+                        .id(),
+                    )
+                };
+                // A sibling cell plans the whole level: of no use once something is aside.
+                let reused = sibling(LevelChoice::Prio(level.prio))
+                    .or_else(|| {
+                        (i + 1 == all.len())
+                            .then(|| sibling(LevelChoice::Full))
+                            .flatten()
+                    })
+                    .filter(|r| r.outcome != Outcome::Error && aside.is_empty());
+                let mut step = match reused {
+                    Some(r) => r.clone(),
+                    None => {
+                        let left = Duration::from_secs_f64(left);
+                        let backend = self.backend(cell.planner, left)?;
+                        let limits = self.limits.with_time(Some(left));
+                        let run = backend.plan(&domain, problem, &limits);
+                        let mut step = record.clone();
+                        step.times = Times::of(&run);
+                        step.outcome = run.outcome;
+                        fill(&mut step, &run, &domain, problem, false);
+                        step
                     }
-                    .id(),
-                )
-            };
-            let reused = sibling(LevelChoice::Prio(level.prio))
-                .or_else(|| {
-                    (i + 1 == all.len())
-                        .then(|| sibling(LevelChoice::Full))
-                        .flatten()
-                })
-                .filter(|r| r.outcome != Outcome::Error);
-            let mut step = match reused {
-                Some(r) => r.clone(),
-                None => {
-                    let left = Duration::from_secs_f64(left);
-                    let backend = self.backend(cell.planner, left)?;
-                    let limits = self.limits.with_time(Some(left));
-                    let run = backend.plan(&domain, problem, &limits);
-                    let mut step = record.clone();
-                    step.times = Times::of(&run);
-                    step.outcome = run.outcome;
-                    fill(&mut step, &run, &domain, problem, false);
-                    step
+                };
+                // A level run that outlasted what is left would have been stopped there.
+                if step.times.total_s > left {
+                    step.times = step.times.truncated(left);
+                    step.outcome = Outcome::TimeLimit;
                 }
-            };
-            // A level run that outlasted what is left would have been stopped there.
-            if step.times.total_s > left {
-                step.times = step.times.truncated(left);
-                step.outcome = Outcome::TimeLimit;
+                times.add(&step.times);
+                peak = peak.max(step.peak_memory_kb);
+                record.widening.push(WideningStep {
+                    prio: level.prio,
+                    operators: operators.len(),
+                    outcome: step.outcome,
+                    times: step.times,
+                });
+                record.prio = level.prio;
+                record.operators = operators.len();
+                record.expansions = step.expansions;
+                record.generated = step.generated;
+                record.error = step.error.clone();
+                match step.outcome {
+                    // Execution in the loop (`closed_loop`): a plan the cube world does
+                    // not execute sets the operator of its failing step aside and the
+                    // level is searched again; one whose goal fails widens.
+                    Outcome::Solved if step.executed == Some(false) => {
+                        record.replans += 1;
+                        let check = closed_loop::check(
+                            level.prio, &domain, &operators, problem, &step.plan,
+                        );
+                        match check {
+                            Ok(closed_loop::Check::StepFailed(s)) => {
+                                record.set_aside.push(SetAsideRecord::of(&s));
+                                aside.push(s.id);
+                                continue;
+                            }
+                            Ok(_) => continue 'levels,
+                            Err(e) => {
+                                record.error = Some(e.to_string());
+                                outcome = Outcome::Error;
+                                break 'levels;
+                            }
+                        }
+                    }
+                    Outcome::Solved => {
+                        record.cost = step.cost;
+                        record.length = step.length;
+                        record.plan = step.plan;
+                        record.unit_cost = step.unit_cost;
+                        record.executed = step.executed;
+                    }
+                    // A level out of memory ends the widening as one out of time does; so
+                    // does a cancelled one (the lab sets no cancel flag today).
+                    Outcome::TimeLimit
+                    | Outcome::MemoryLimit
+                    | Outcome::Cancelled
+                    | Outcome::Error => {}
+                    Outcome::RelaxedUnreachable | Outcome::Unsolvable => continue 'levels,
+                }
+                outcome = step.outcome;
+                break 'levels;
             }
-            times.add(&step.times);
-            peak = peak.max(step.peak_memory_kb);
-            record.widening.push(WideningStep {
-                prio: level.prio,
-                operators: level.operators.len(),
-                outcome: step.outcome,
-                times: step.times,
-            });
-            record.prio = level.prio;
-            record.operators = level.operators.len();
-            record.expansions = step.expansions;
-            record.generated = step.generated;
-            record.error = step.error.clone();
-            match step.outcome {
-                Outcome::Solved => {
-                    record.cost = step.cost;
-                    record.length = step.length;
-                    record.plan = step.plan;
-                    record.unit_cost = step.unit_cost;
-                    record.executed = step.executed;
-                }
-                // A level out of memory ends the widening as one out of time does; so
-                // does a cancelled one (the lab sets no cancel flag today).
-                Outcome::TimeLimit | Outcome::MemoryLimit | Outcome::Cancelled | Outcome::Error => {
-                }
-                Outcome::RelaxedUnreachable | Outcome::Unsolvable => continue,
-            }
-            outcome = step.outcome;
-            break;
         }
         if all.is_empty() {
             record.error = Some("the library has no level".into());
@@ -460,6 +500,42 @@ mod tests {
 
     fn lab_with_limit(bytes: Option<u64>) -> Lab {
         Lab::new(simulate::SimParams::default(), None, None, bytes)
+    }
+
+    #[test]
+    fn algorithm1_sets_aside_an_operator_whose_step_fails_and_plans_again() {
+        let mut lab = lab();
+        let alg1 = cell(LevelChoice::Algorithm1, 1);
+        // The library of the cell's conditions, replaced by one whose cheapest way to
+        // pick a cube up is an Idle that adds inHand (closed-loop's fixture).
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../closed-loop/tests/fixtures/broken-idle-library.json"
+        ))
+        .unwrap();
+        let broken = Library::from_json(&text).unwrap();
+        lab.libraries.insert(alg1.conditions.library_key(), broken);
+        let r = lab.run(&alg1, &Known::new()).unwrap();
+        assert_eq!((r.outcome, r.prio), (Outcome::Solved, 1), "{r:?}");
+        assert_eq!(r.executed, Some(true));
+        assert_eq!(r.replans, 1);
+        let names: Vec<&str> = r.set_aside.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(names, ["idle"]);
+        assert!(r.plan.iter().all(|s| s.action != "idle"), "{r:?}");
+        // Priority 1 twice, the second time without the idle.
+        let tried: Vec<(usize, usize)> = r.widening.iter().map(|w| (w.prio, w.operators)).collect();
+        assert_eq!(tried, [(1, 3), (1, 2)]);
+        assert_eq!(r.operators, 2);
+        // The priority-1 cell plans the whole level: its plan does not execute.
+        let p1 = lab
+            .run(&cell(LevelChoice::Prio(1), 1), &Known::new())
+            .unwrap();
+        assert_eq!(p1.executed, Some(false));
+        // Known, it is taken for the first attempt and the loop goes on from there.
+        let mut known = Known::new();
+        known.insert(p1.id.clone(), p1);
+        let reused = lab.run(&alg1, &known).unwrap();
+        assert_eq!((reused.replans, reused.plan.clone()), (1, r.plan.clone()));
     }
 
     #[test]

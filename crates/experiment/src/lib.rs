@@ -55,7 +55,9 @@ pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
 pub use memory_limit::auto_memory_limit;
 pub use numbers::{numbers, sizes};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};
-pub use record::{append_record, parse_records, read_records, RunRecord, Times, WideningStep};
+pub use record::{
+    append_record, parse_records, read_records, RunRecord, SetAsideRecord, Times, WideningStep,
+};
 pub use reproduce::{reproduce, reproduce_cell, reproduce_cells, ReproduceOptions, Reproduction};
 pub use study::{
     study, study_cell, study_cells, study_grid, StudyConditionArgs, StudyOptions, StudyOutcome,

@@ -66,13 +66,51 @@ impl Times {
     }
 }
 
-/// One level tried by Algorithm 1.
+fn is_zero(n: &u32) -> bool {
+    *n == 0
+}
+
+/// One level tried by Algorithm 1 (a level searched again after the execution loop set
+/// an operator aside is tried again, with fewer operators).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct WideningStep {
     pub prio: usize,
     pub operators: usize,
     pub outcome: Outcome,
     pub times: Times,
+}
+
+/// An operator an Algorithm 1 cell set aside: the execution loop found a step of its
+/// in a plan that the cube world did not execute (`closed_loop::SetAside`, as a record).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+pub struct SetAsideRecord {
+    /// The operator's display name (`stack2`).
+    pub name: String,
+    /// Its stable id.
+    pub id: String,
+    /// The level whose plan failed.
+    pub prio: usize,
+    /// The failing step's 1-based position in that plan.
+    pub step: usize,
+    /// The step, `(stack2 left_hand cube_2 cube_1)`.
+    pub action: String,
+    /// Why, in the words of `demoplan execute`: the effects promised against the
+    /// grounded facts, collisions.
+    pub why: String,
+}
+
+impl SetAsideRecord {
+    /// The record of what the loop set aside.
+    pub fn of(s: &closed_loop::SetAside) -> SetAsideRecord {
+        SetAsideRecord {
+            name: s.name.clone(),
+            id: s.id.clone(),
+            prio: s.prio,
+            step: s.step,
+            action: s.action.clone(),
+            why: s.why.clone(),
+        }
+    }
 }
 
 /// What one cell gave.
@@ -113,6 +151,14 @@ pub struct RunRecord {
     /// Algorithm 1 only: every level tried, in order.
     #[serde(default)]
     pub widening: Vec<WideningStep>,
+    /// Algorithm 1 only: the operators the execution loop set aside, in order (absent
+    /// from the line when none was, and in records written before the loop).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub set_aside: Vec<SetAsideRecord>,
+    /// Algorithm 1 only: plans that failed the execution check, each followed by another
+    /// search (absent from the line when 0).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub replans: u32,
     /// Why the run is an error, if it is one.
     #[serde(default)]
     pub error: Option<String>,
@@ -147,6 +193,8 @@ impl RunRecord {
             plan: Vec::new(),
             unit_cost: false,
             widening: Vec::new(),
+            set_aside: Vec::new(),
+            replans: 0,
             error: None,
             crashed: false,
         }
@@ -316,9 +364,39 @@ mod tests {
             plan: vec![pddl::Step::new("reach", ["left_hand", "cube_2"])],
             unit_cost: false,
             widening: vec![],
+            set_aside: vec![],
+            replans: 0,
             error: None,
             crashed: false,
         }
+    }
+
+    #[test]
+    fn what_the_execution_loop_set_aside_reads_back_and_older_lines_read_without_it() {
+        let mut a = record("a");
+        let plain = a.to_json_line();
+        assert!(
+            !plain.contains("set_aside") && !plain.contains("replans"),
+            "{plain}"
+        );
+        a.set_aside.push(SetAsideRecord {
+            name: "stack2".into(),
+            id: "f9f44c129737eb4a".into(),
+            prio: 1,
+            step: 3,
+            action: "(stack2 left_hand cube_2 cube_1)".into(),
+            why: "expected (ontop cube_2 cube_1), grounded state has (handopen left_hand)".into(),
+        });
+        a.replans = 1;
+        let line = a.to_json_line();
+        assert!(line.contains(r#""replans":1"#), "{line}");
+        let path = Path::new("results.jsonl");
+        let read = parse_records(&format!("{line}\n"), path).unwrap();
+        assert_eq!(read, vec![a.clone()]);
+        // A line written before the loop: no set-aside list, no replans.
+        let old = plain.replace(r#","widening":[]"#, "");
+        let read = parse_records(&format!("{old}\n"), path).unwrap();
+        assert_eq!((read[0].replans, read[0].set_aside.len()), (0, 0));
     }
 
     #[test]

@@ -214,6 +214,27 @@ impl Solved {
     }
 }
 
+/// One level's planning run, as [`solve`] makes it: with demoplan, [`Backend::plan`];
+/// with Fast Downward, demoplan's translator first rejects a level whose goal the
+/// relaxation cannot reach (or whose task is broken), with no limits (it takes
+/// milliseconds), and only a level it accepts is planned by Fast Downward. Callers that
+/// wrap Algorithm 1 (the execution loop of the `closed-loop` crate) plan their levels
+/// through it, so that every level is planned one way.
+pub fn plan_level(
+    backend: &Backend,
+    domain: &pddl::Domain,
+    problem: &pddl::Problem,
+    limits: &RunLimits,
+) -> PlanRun {
+    match backend {
+        Backend::Demoplan(_) => backend.plan(domain, problem, limits),
+        Backend::FastDownward(..) => match translate_checked(domain, problem) {
+            Translated::Done(run) => run,
+            Translated::Task(..) => backend.plan(domain, problem, limits),
+        },
+    }
+}
+
 /// Algorithm 1: for priority 1, 2, ... over the distinct operator subsets, build the
 /// domain and plan; stop at the first plan. Every level gets `limits` of its own (time,
 /// translation included, and memory: a level that reaches either has that outcome and
@@ -232,15 +253,7 @@ pub fn solve(
     let mut results = Vec::new();
     for level in levels(library, options) {
         let domain = domain("demoplan", &level.operators);
-        let run = match backend {
-            Backend::Demoplan(_) => backend.plan(&domain, problem, &limits),
-            // Rejected (or broken) before search by demoplan's translator, with no
-            // limits (it takes milliseconds), then planned by Fast Downward.
-            Backend::FastDownward(..) => match translate_checked(&domain, problem) {
-                Translated::Done(run) => run,
-                Translated::Task(..) => backend.plan(&domain, problem, &limits),
-            },
-        };
+        let run = plan_level(backend, &domain, problem, &limits);
         let result = LevelResult {
             prio: level.prio,
             operators: level.operators.len(),

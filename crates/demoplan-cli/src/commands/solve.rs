@@ -1,4 +1,4 @@
-//! `demoplan solve LIBRARY PROBLEM`: the paper's Algorithm 1 on the command line.
+//! `demoplan solve LIBRARY PROBLEM`: Algorithm 1 with execution in the loop (`closed_loop`).
 
 use std::path::Path;
 
@@ -34,33 +34,32 @@ pub fn run(args: SolveArgs) -> Result<ExitCode, Failure> {
         keep_without_effects: args.keep_without_effects,
     };
     print!("{}", slim::level_header());
-    let solved = slim::solve(&library, options, &problem, &backend, limits, |level| {
-        print!("{}", slim::level_row(level));
-        if let Some(e) = &level.run.error {
-            eprintln!("error at priority {}: {e}", level.prio);
-        }
-    });
+    let solved = closed_loop::solve(
+        &library,
+        options,
+        &problem,
+        &backend,
+        limits,
+        args.execution.execution(),
+        |a| {
+            print!("{}", closed_loop::attempt_lines(a));
+            eprint!("{}", a.error_line());
+        },
+    )
+    .map_err(|e| Failure::plain(e.exit_code(), format!("{}: {e}", args.problem.display())))?;
     print!("{}", solved.cumulative_line());
-    let Some(level) = solved.plan_level() else {
-        if let Some(which) = solved.limits_reached() {
-            println!("No plan: some level reached {which} (exit 12).");
-            return Ok(ExitCode(12));
-        }
-        println!("No plan on any level: every level is unsolvable.");
-        return Ok(ExitCode::UNSOLVABLE);
+    let closed_loop::Verdict::Plan(attempt) = solved.verdict() else {
+        print!("{}", solved.no_plan_text());
+        return Ok(solved.exit_code());
     };
-    write_atomically(&args.plan_file, &level.run.plan_text().unwrap_or_default())?;
-    println!(
-        "Solution found at priority {} ({} operators): {} step(s), cost {}; plan written to {}",
-        level.prio,
-        level.operators,
-        level.run.plan.len(),
-        level.run.cost.unwrap_or(0),
-        args.plan_file.display()
-    );
+    write_atomically(
+        &args.plan_file,
+        &attempt.level.run.plan_text().unwrap_or_default(),
+    )?;
+    println!("{}", attempt.solution_line(&args.plan_file));
     if args.compare_full {
-        let slim_cost = level.run.cost.unwrap_or(0);
-        let full = slim::compare_full(&library, options, &problem, &backend, &limits, slim_cost);
+        let cost = attempt.level.run.cost.unwrap_or(0);
+        let full = slim::compare_full(&library, options, &problem, &backend, &limits, cost);
         print!("{}", full.unwrap_or_default());
     }
     Ok(ExitCode::SUCCESS)

@@ -159,6 +159,13 @@ pub fn run_properties(r: &RunRecord, task: usize, planner_time_limit: f64) -> Va
     if let Some(executed) = r.executed {
         p.insert("demoplan_executed".into(), json!(executed));
     }
+    // Algorithm 1's execution loop: plans that failed execution and the operators set
+    // aside for them (by display name), 0 and [] when none.
+    if r.level == crate::cell::LevelChoice::Algorithm1 {
+        p.insert("demoplan_replans".into(), json!(r.replans));
+        let names: Vec<&str> = r.set_aside.iter().map(|s| s.name.as_str()).collect();
+        p.insert("demoplan_set_aside".into(), json!(names));
+    }
     Value::Object(p)
 }
 
@@ -297,5 +304,30 @@ mod tests {
             p["unexplained_errors"],
             json!(["the child process was killed"])
         );
+    }
+
+    #[test]
+    fn algorithm1_runs_say_what_the_execution_loop_set_aside() {
+        let mut r = RunRecord::blank(&cell());
+        let p = run_properties(&r, 1, 60.0);
+        assert!(p.get("demoplan_replans").is_none() && p.get("demoplan_set_aside").is_none());
+        r.level = LevelChoice::Algorithm1;
+        let p = run_properties(&r, 1, 60.0);
+        assert_eq!(
+            (&p["demoplan_replans"], &p["demoplan_set_aside"]),
+            (&json!(0), &json!([]))
+        );
+        r.replans = 2;
+        r.set_aside.push(crate::record::SetAsideRecord {
+            name: "stack2".into(),
+            id: "0123456789abcdef".into(),
+            prio: 4,
+            step: 21,
+            action: "(stack2 left_hand cube_2 cube_1)".into(),
+            why: "expected (ontop cube_2 cube_1), grounded state has (handopen left_hand)".into(),
+        });
+        let p = run_properties(&r, 1, 60.0);
+        assert_eq!(p["demoplan_replans"], 2);
+        assert_eq!(p["demoplan_set_aside"], json!(["stack2"]));
     }
 }

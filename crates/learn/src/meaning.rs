@@ -35,13 +35,21 @@ pub enum Breach {
     TakeEndsEmpty,
     /// A Stack that ends still holding the cube it held.
     PlacementKeepsCube,
+    /// A cube that leaves its support before its hand is seen to hold it (a grasp known
+    /// from geometry is seen once the cube moves with the hand): the lift-off is moved to
+    /// the activity that holds it. Not a breach of a class: counted by mending.
+    LiftBeforeGrasp,
+    /// A cube that lands while its hand is still seen to hold it (the release from
+    /// geometry is seen once the hand moves off): the landing is moved to the activity
+    /// that lets it go. Counted by mending.
+    LandingBeforeRelease,
     /// A Put or Stack whose cube ends on nothing (not on the table, not on a cube).
     PlacementLeavesCubeUnsupported,
 }
 
 impl Breach {
     /// Every breach, in order.
-    pub const ALL: [Breach; 7] = [
+    pub const ALL: [Breach; 9] = [
         Breach::IdleChangesThings,
         Breach::IdleActsOn,
         Breach::ReachEndsAtNothing,
@@ -49,6 +57,8 @@ impl Breach {
         Breach::TakeEndsEmpty,
         Breach::PlacementKeepsCube,
         Breach::PlacementLeavesCubeUnsupported,
+        Breach::LiftBeforeGrasp,
+        Breach::LandingBeforeRelease,
     ];
 
     /// Whether mending answers it ([`crate::mend`]). A Reach that ends at nothing (a hand
@@ -69,6 +79,8 @@ impl Breach {
             Breach::TakeEndsEmpty => "take-ends-empty",
             Breach::PlacementKeepsCube => "placement-keeps-cube",
             Breach::PlacementLeavesCubeUnsupported => "placement-leaves-cube-unsupported",
+            Breach::LiftBeforeGrasp => "lift-before-grasp",
+            Breach::LandingBeforeRelease => "landing-before-release",
         }
     }
 }

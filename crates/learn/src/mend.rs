@@ -191,8 +191,93 @@ pub fn mend(
     if grouping == Grouping::Runs {
         return (grouped.to_vec(), MendCounts::default());
     }
-    let (mended, counts) = mend_pass(grouped, space);
+    let mut aligned = grouped.to_vec();
+    let mut counts = align_with_hold(&mut aligned, space);
+    let (mended, more) = mend_pass(&aligned, space);
+    counts.add(&more);
     regroup(mended, grouping, space, counts)
+}
+
+/// Whether `f` relates `cube` to what it stands on or touches, `cube` being the upper.
+fn rests(f: &Fact, cube: EntityId) -> bool {
+    match f.predicate {
+        Predicate::OnTop => f.first() == cube,
+        Predicate::InTouch => f.args().contains(&cube),
+        _ => false,
+    }
+}
+
+/// Sets `facts` in a state to `on`.
+fn set_facts(state: &mut State, facts: &[Fact], on: bool, space: &FactSpace) {
+    let mut these = space.empty_state();
+    for f in facts {
+        if let Some(id) = space.id(f) {
+            these.insert(id);
+        }
+    }
+    *state = if on {
+        let mut union = state.clone();
+        for id in these.ids() {
+            union.insert(id);
+        }
+        union
+    } else {
+        state.difference(&these)
+    };
+}
+
+/// A cube leaves its support when a hand grasps it and lands when the hand lets it go;
+/// where grasps are known from geometry alone, the hold is seen late (the cube must move
+/// with the hand first) and let go late (the hand must move off). Between two activities
+/// of a hand, such a change seen before the hold changes belongs with it: the cube's
+/// lift-off that an activity not holding it shows, when the hand's next activity holds
+/// it, moves to that one; the landing that an activity still holding its cube shows, when
+/// the next one lets the cube go, moves to that one. Moving a change is moving the
+/// boundary state between the two. Counted as [`Breach::LiftBeforeGrasp`] and
+/// [`Breach::LandingBeforeRelease`].
+fn align_with_hold(activities: &mut [Segment], space: &FactSpace) -> MendCounts {
+    let mut counts = MendCounts::default();
+    for i in 1..activities.len() {
+        let (before, after) = activities.split_at_mut(i);
+        let (x, y) = (&mut before[i - 1], &mut after[0]);
+        if x.hand != y.hand {
+            continue;
+        }
+        let (start, end) = (x.start_state.clone(), x.end_state.clone());
+        let holds_at = |state: &State, c: EntityId| holding(state, space, x.hand).contains(&c);
+        let changed = |gone: bool| -> Vec<Fact> {
+            let (from, to) = if gone { (&start, &end) } else { (&end, &start) };
+            from.difference(to).facts(space).collect()
+        };
+        // Lift-off before the grasp is seen.
+        for &c in &y.held {
+            if x.held.contains(&c) || holds_at(&start, c) {
+                continue;
+            }
+            let lifted: Vec<Fact> = changed(true).into_iter().filter(|f| rests(f, c)).collect();
+            if !lifted.is_empty() {
+                set_facts(&mut x.end_state, &lifted, true, space);
+                set_facts(&mut y.start_state, &lifted, true, space);
+                *counts.mended.entry(Breach::LiftBeforeGrasp).or_default() += 1;
+            }
+        }
+        // Landing before the release is seen.
+        for c in holding(&end, space, x.hand) {
+            if holds_at(&y.end_state, c) {
+                continue;
+            }
+            let landed: Vec<Fact> = changed(false).into_iter().filter(|f| rests(f, c)).collect();
+            if !landed.is_empty() {
+                set_facts(&mut x.end_state, &landed, false, space);
+                set_facts(&mut y.start_state, &landed, false, space);
+                *counts
+                    .mended
+                    .entry(Breach::LandingBeforeRelease)
+                    .or_default() += 1;
+            }
+        }
+    }
+    counts
 }
 
 /// One pass of the rules over `grouped`, without regrouping.

@@ -283,7 +283,9 @@ fn a_two_handed_bag_learns_operators_whose_plans_execute() {
             let tower: Vec<String> = (1..=height).map(|i| format!("cube_{i}")).collect();
             let what = format!("{hands} hand(s), tower of {height}");
             let tower = tower.join(",");
-            let (code, text) = run(&["problem", "--tower", &tower, "--hands", hands, "-o", "p.pddl"]);
+            let (code, text) = run(&[
+                "problem", "--tower", &tower, "--hands", hands, "-o", "p.pddl",
+            ]);
             assert_eq!(code, Some(0), "{what}: {text}");
             let mut modes = vec![true];
             if height <= 3 {
@@ -302,7 +304,8 @@ fn a_two_handed_bag_learns_operators_whose_plans_execute() {
                     .and_then(|l| l.split_whitespace().next())
                     .unwrap_or_else(|| panic!("{what}: no priority in {text}"))
                     .to_string();
-                let (code, text) = run(&["domain", "library.json", "--prio", &prio, "-o", "d.pddl"]);
+                let (code, text) =
+                    run(&["domain", "library.json", "--prio", &prio, "-o", "d.pddl"]);
                 assert_eq!(code, Some(0), "{what}: {text}");
                 let (code, text) = run(&["execute", "d.pddl", "p.pddl", "p.plan"]);
                 assert_eq!(code, Some(0), "{what}, execute {execute}: {text}");

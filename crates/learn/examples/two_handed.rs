@@ -7,9 +7,11 @@
 //! activities, operators; `learn::add_frames`), and prints
 //!
 //! - the number of activities and of distinct operators, and operators per type;
-//! - the agreement of the activity classes with the simulator's ground truth: for each
-//!   activity, the truth's majority activity over the activity's frames for its hand,
-//!   against the activity's class (and the confusions, class -> truth);
+//! - the agreement of the (mended) activity classes with the simulator's ground truth:
+//!   for each activity, the class of the truth activity of its hand that overlaps it
+//!   longest (`learn::truth_activities`: the noise-free hand facts through the same
+//!   segmenter and grouping), and the confusions, class -> truth; activities mended and
+//!   dropped (`learn::mend`);
 //! - the number of learned Idle operators whose add effects hold `inHand`, `onTop` or
 //!   `inTouch` (an Idle that grasps or stacks: a change some other activity caused or
 //!   should have been classified as).
@@ -21,7 +23,7 @@
 
 use std::collections::BTreeMap;
 
-use grounding::{GroundingConfig, Predicate};
+use grounding::{GroundingConfig, HandFacts, Predicate};
 use learn::{Grouping, Library};
 use segment::{Activity, ActivityTree};
 use simulate::{SimParams, Style};
@@ -91,6 +93,8 @@ struct Measured {
     operators: usize,
     per_type: BTreeMap<Activity, usize>,
     idle_changes: usize,
+    mended: usize,
+    dropped: usize,
 }
 
 fn measure(o: &Options, seed: u64) -> Result<Measured, String> {
@@ -104,23 +108,30 @@ fn measure(o: &Options, seed: u64) -> Result<Measured, String> {
     for demo in &study.demonstrations {
         let (frames, truth): (Vec<_>, Vec<_>) = demo.frames().unzip();
         let segmented = learn::segment_frames(demo.header(), frames.clone(), &config, &tree);
-        for a in learn::activities(&segmented.segments, o.grouping) {
-            let mut votes: BTreeMap<Activity, usize> = BTreeMap::new();
-            for t in truth
-                .iter()
-                .filter(|t| t.time >= a.start - 1e-9 && t.time <= a.end + 1e-9)
-            {
-                if let Some(h) = t.hands.iter().find(|h| h.hand == a.hand) {
-                    *votes.entry(h.activity).or_default() += 1;
-                }
-            }
-            let majority = votes
-                .iter()
-                .max_by_key(|(activity, n)| (**n, std::cmp::Reverse(**activity)))
-                .map_or(Activity::Idle, |(activity, _)| *activity);
+        let grouped = learn::activities(&segmented.segments, o.grouping);
+        let (mended, counts) = learn::mend(&grouped, o.grouping, &segmented.space);
+        m.dropped += counts.dropped_total() as usize;
+        m.mended += counts.mended_total() as usize;
+        let truth_frames = truth.iter().map(|t| {
+            let facts: Vec<HandFacts> = (t.hands.iter())
+                .map(|h| HandFacts {
+                    moving: h.moving,
+                    open: None,
+                    acted_on: h.acted_on,
+                    in_hand: h.in_hand,
+                })
+                .collect();
+            (t.time, facts)
+        });
+        let hands = segmented.space.hands().to_vec();
+        let truth_activities =
+            learn::truth_activities(&hands, truth_frames, &tree, config.min_duration, o.grouping);
+        let classes = learn::truth_classes(&mended, &truth_activities);
+        for (a, truth) in mended.iter().zip(classes) {
+            let truth = truth.unwrap_or(Activity::Idle);
             m.activities += 1;
-            m.agree += usize::from(majority == a.activity);
-            *m.confusion.entry((a.activity, majority)).or_default() += 1;
+            m.agree += usize::from(truth == a.activity);
+            *m.confusion.entry((a.activity, truth)).or_default() += 1;
         }
         learn::add_frames(&mut library, demo.header(), frames, &config, &tree, "");
     }
@@ -159,9 +170,11 @@ fn main() {
     let types = Activity::OPERATOR_ORDER;
     let type_names: Vec<String> = types.iter().map(|t| format!("{t:?}")).collect();
     println!(
-        "{:>5} {:>10} {:>9} {:>9}  {}  {:>11}",
+        "{:>5} {:>10} {:>7} {:>7} {:>9} {:>9}  {}  {:>11}",
         "seed",
         "activities",
+        "mended",
+        "dropped",
         "agree",
         "operators",
         type_names
@@ -180,8 +193,10 @@ fn main() {
             }
         };
         println!(
-            "{seed:>5} {:>10} {:>8.1}% {:>9}  {}  {:>11}",
+            "{seed:>5} {:>10} {:>7} {:>7} {:>8.1}% {:>9}  {}  {:>11}",
             m.activities,
+            m.mended,
+            m.dropped,
             100.0 * m.agree as f64 / m.activities.max(1) as f64,
             m.operators,
             types
@@ -191,6 +206,8 @@ fn main() {
             m.idle_changes
         );
         total.activities += m.activities;
+        total.mended += m.mended;
+        total.dropped += m.dropped;
         total.agree += m.agree;
         total.operators += m.operators;
         total.idle_changes += m.idle_changes;
@@ -203,9 +220,11 @@ fn main() {
     }
     let n = o.seeds.len().max(1) as f64;
     println!(
-        "{:>5} {:>10.1} {:>8.1}% {:>9.1}  {}  {:>11.1}",
+        "{:>5} {:>10.1} {:>7.1} {:>7.1} {:>8.1}% {:>9.1}  {}  {:>11.1}",
         "mean",
         total.activities as f64 / n,
+        total.mended as f64 / n,
+        total.dropped as f64 / n,
         100.0 * total.agree as f64 / total.activities.max(1) as f64,
         total.operators as f64 / n,
         types
@@ -217,7 +236,7 @@ fn main() {
             .collect::<String>(),
         total.idle_changes as f64 / n
     );
-    println!("class -> truth's majority (activities over all seeds):");
+    println!("class -> truth (activities over all seeds):");
     for ((class, truth), count) in &total.confusion {
         let mark = if class == truth { "" } else { "  (disagree)" };
         println!("  {class:?} -> {truth:?}: {count}{mark}");

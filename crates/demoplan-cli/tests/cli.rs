@@ -2014,7 +2014,7 @@ fn study_writes_every_file_and_resumes() {
     // ratios.csv: per condition (2 groupings x 2 heights), planner, measure and ratio.
     let ratios = read("ratios.csv");
     assert!(ratios.starts_with(
-        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n"
+        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,generalised,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n"
     ));
     assert_eq!(ratios.lines().count(), 1 + 2 * 2 * 2 * 2 * 2, "{ratios}");
     for line in ratios.lines().skip(1) {

@@ -296,6 +296,7 @@ fn learn_into(
         out: &out,
         lambda: Some(library.lambda),
         grouping: None,
+        form: None,
         // `demoplan learn`'s default; the folder is the caller's, so no other learner
         // holds its lock.
         lock_timeout: Some(Duration::from_secs(10)),

@@ -39,7 +39,8 @@ impl From<UpdateError> for Failure {
             UpdateError::Read(e) => read_failure(e),
             e @ (UpdateError::Hash { .. }
             | UpdateError::Lambda { .. }
-            | UpdateError::Grouping { .. }) => Failure::plain(ExitCode::USAGE, e),
+            | UpdateError::Grouping { .. }
+            | UpdateError::Form { .. }) => Failure::plain(ExitCode::USAGE, e),
             UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
                 ExitCode::LOCKED,
                 format!(
@@ -64,6 +65,9 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         out: &args.out,
         lambda: args.lambda,
         grouping: args.activities,
+        form: args
+            .generalise
+            .then_some(learn::OperatorForm::Generalised),
         lock_timeout,
     };
     let before = update.read()?;
@@ -76,8 +80,15 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let library = &updated.library;
     print!("{}", updated.log);
     print!("{}", summary_table(library));
+    let form = match library.form() {
+        learn::OperatorForm::Specific => String::new(),
+        learn::OperatorForm::Generalised => format!(
+            " generalised from {}",
+            library.specific_entries().count()
+        ),
+    };
     println!(
-        "wrote {} ({} operators from {} activities of {} recordings)",
+        "wrote {} ({} operators{form} from {} activities of {} recordings)",
         args.out.display(),
         library.len(),
         library.segments(),

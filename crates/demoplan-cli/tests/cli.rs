@@ -1789,6 +1789,55 @@ fn learn_operators_domain_problem_and_solve_work_together() {
     );
     assert!(stderr_text(&mixed).contains("`runs` activities"));
     assert!(!tmp.join("mixed.json").exists());
+    // Generalised operators (`learn --generalise`): the file says so, learning into it
+    // again keeps them, and a library of specific operators refuses them.
+    let general = tmp.join("general.json");
+    let learned = succeeds(
+        demoplan()
+            .arg("learn")
+            .args(&recordings)
+            .arg("--generalise")
+            .arg("-o")
+            .arg(&general),
+    );
+    assert!(
+        stdout_text(&learned).contains("operators generalised from"),
+        "{}",
+        stdout_text(&learned)
+    );
+    let text = std::fs::read_to_string(&general).unwrap();
+    assert!(text.contains("\"operator_form\": \"generalised\""));
+    succeeds(
+        demoplan()
+            .arg("learn")
+            .arg(&recordings[0])
+            .arg("--library")
+            .arg(&general)
+            .arg("-o")
+            .arg(&general),
+    );
+    assert_eq!(std::fs::read_to_string(&general).unwrap(), text);
+    let refused = exits(
+        36,
+        demoplan()
+            .arg("learn")
+            .arg(&recordings[0])
+            .arg("--library")
+            .arg(&runs)
+            .args(["--activities", "runs", "--generalise", "-o"])
+            .arg(tmp.join("refused.json")),
+    );
+    assert!(stderr_text(&refused).contains("one library holds operators of one form"));
+    assert!(!tmp.join("refused.json").exists());
+    let planned = succeeds(
+        demoplan()
+            .arg("solve")
+            .arg(&general)
+            .arg(&problem)
+            .args(["--time-limit", "60", "--plan-file"])
+            .arg(tmp.join("general.plan")),
+    );
+    assert!(stdout_text(&planned).contains("Solution found at priority 1 "));
     // The plan validates on the domain it was found in and executes in the cube world.
     let level: String = log
         .lines()

@@ -65,9 +65,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         out: &args.out,
         lambda: args.lambda,
         grouping: args.activities,
-        form: args
-            .generalise
-            .then_some(learn::OperatorForm::Generalised),
+        form: args.generalise.then_some(learn::OperatorForm::Generalised),
         lock_timeout,
     };
     let before = update.read()?;
@@ -82,10 +80,9 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     print!("{}", summary_table(library));
     let form = match library.form() {
         learn::OperatorForm::Specific => String::new(),
-        learn::OperatorForm::Generalised => format!(
-            " generalised from {}",
-            library.specific_entries().count()
-        ),
+        learn::OperatorForm::Generalised => {
+            format!(" generalised from {}", library.specific_entries().count())
+        }
     };
     println!(
         "wrote {} ({} operators{form} from {} activities of {} recordings)",

@@ -385,13 +385,8 @@ pub struct LearnArgs {
     /// docs/operators.md.
     #[arg(long, value_name = "KIND", value_enum)]
     pub activities: Option<learn::Grouping>,
-    /// For a new library: generalise its operators. Operators of one type whose effects
-    /// are equal up to renaming of their parameters become one, with the precondition
-    /// facts all of them share and the sum of their counts (the paper's counts, without
-    /// it, are the default). Learning into a library of specific operators with it is a
-    /// command line error (exit 36). See docs/operators.md.
-    #[arg(long)]
-    pub generalise: bool,
+    #[command(flatten)]
+    pub form: learn::FormArgs,
     #[command(flatten)]
     pub segmentation: SegmentationArgs,
     /// How long to wait while another learner writes the same library (its lock,

@@ -1801,7 +1801,7 @@ fn learn_operators_domain_problem_and_solve_work_together() {
             .arg(&general),
     );
     assert!(
-        stdout_text(&learned).contains("operators generalised from"),
+        stdout_text(&learned).contains("generalised: "),
         "{}",
         stdout_text(&learned)
     );

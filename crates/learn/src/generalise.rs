@@ -61,6 +61,26 @@ impl OperatorForm {
     }
 }
 
+/// `learn --generalise`, declared here (with the `clap` feature) beside the form it
+/// chooses.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::Args))]
+pub struct FormArgs {
+    /// For a new library: merge operators of one type whose effects are equal up to
+    /// renaming into one, with the precondition facts all share and the sum of their
+    /// counts (off: the paper's operators). Into a library of specific operators: exit 36.
+    /// See docs/operators.md.
+    #[cfg_attr(feature = "clap", arg(long))]
+    pub generalise: bool,
+}
+
+impl FormArgs {
+    /// The form asked for: generalised with `--generalise`, else the library's own.
+    pub fn form(&self) -> Option<OperatorForm> {
+        self.generalise.then_some(OperatorForm::Generalised)
+    }
+}
+
 /// The effects of an operator up to renaming: the operator of its effect parameters with
 /// its add and delete lists only, in canonical form. Two operators of one type whose
 /// keys are equal are merged by [`generalise`].

@@ -52,7 +52,7 @@ pub use files::{
     arff_reader, hand_table, labelled_frames, learn_tree, nominal_dataset, read_truth,
     segment_arff, segment_path, FileError, Labelled, TreeError, ARFF_FRAME_RATE,
 };
-pub use generalise::{covers, effect_key, generalise, OperatorForm, ALIGNMENT_BUDGET};
+pub use generalise::{covers, effect_key, generalise, FormArgs, OperatorForm, ALIGNMENT_BUDGET};
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};
 pub use library::{

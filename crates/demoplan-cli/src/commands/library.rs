@@ -37,10 +37,6 @@ impl From<UpdateError> for Failure {
     fn from(e: UpdateError) -> Failure {
         match e {
             UpdateError::Read(e) => read_failure(e),
-            e @ (UpdateError::Hash { .. }
-            | UpdateError::Lambda { .. }
-            | UpdateError::Grouping { .. }
-            | UpdateError::Form { .. }) => Failure::plain(ExitCode::USAGE, e),
             UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
                 ExitCode::LOCKED,
                 format!(
@@ -51,6 +47,7 @@ impl From<UpdateError> for Failure {
             e @ (UpdateError::Lock(_) | UpdateError::Write(_)) => {
                 Failure::plain(ExitCode::CRITICAL_ERROR, e)
             }
+            e => Failure::plain(ExitCode::USAGE, e), // the hash, lambda, grouping or form
         }
     }
 }
@@ -65,7 +62,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         out: &args.out,
         lambda: args.lambda,
         grouping: args.activities,
-        form: args.generalise.then_some(learn::OperatorForm::Generalised),
+        form: args.form.form(),
         lock_timeout,
     };
     let before = update.read()?;
@@ -78,14 +75,8 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let library = &updated.library;
     print!("{}", updated.log);
     print!("{}", summary_table(library));
-    let form = match library.form() {
-        learn::OperatorForm::Specific => String::new(),
-        learn::OperatorForm::Generalised => {
-            format!(" generalised from {}", library.specific_entries().count())
-        }
-    };
     println!(
-        "wrote {} ({} operators{form} from {} activities of {} recordings)",
+        "wrote {} ({} operators from {} activities of {} recordings)",
         args.out.display(),
         library.len(),
         library.segments(),

@@ -62,7 +62,11 @@ def solve(
 ]: ...
 def read_poses(path: str) -> Tuple[List[str], List[float], List[float]]: ...
 def learn(
-    library: _Library, files: List[str], folder: str, mapping: Optional[str] = None
+    library: _Library,
+    files: List[str],
+    folder: str,
+    mapping: Optional[str] = None,
+    generalise: bool = False,
 ) -> Tuple[_Library, str]: ...
 def simulate(
     out: str, participants: int, per_participant: int, seed: int, cubes: Optional[int] = None

@@ -103,15 +103,23 @@ class Library:
         self,
         recordings: Iterable["os.PathLike[str] | str"],
         mapping: Optional["os.PathLike[str] | str"] = None,
+        generalise: bool = False,
     ) -> str:
         """Adds the recordings' activities to the library (those it has already counted
-        are skipped, by content hash), as ``demoplan learn`` does; returns its log."""
+        are skipped, by content hash), as ``demoplan learn`` does; returns its log.
+        ``generalise=True`` is ``demoplan learn --generalise``: an empty library becomes
+        one of generalised operators (docs/operators.md); a library of specific
+        operators refuses it (a DemoplanError with exit code 36)."""
         files = [os.fspath(r) for r in recordings]
         if not files:
             raise DemoplanError("learn: no recordings given", 36)
         with tempfile.TemporaryDirectory() as folder:
             self._inner, log = _demoplan.learn(
-                self._inner, files, folder, None if mapping is None else os.fspath(mapping)
+                self._inner,
+                files,
+                folder,
+                None if mapping is None else os.fspath(mapping),
+                generalise,
             )
         return log
 

@@ -56,6 +56,30 @@ def test_learning_twice_counts_each_recording_once(recordings: List[pathlib.Path
     assert library.to_json() == once.to_json()
 
 
+def test_generalise_learns_what_demoplan_learn_generalise_writes(
+    recordings: List[pathlib.Path], tmp_path: pathlib.Path, demoplan_binary: pathlib.Path
+) -> None:
+    library = demoplan.Library()
+    library.learn(recordings, generalise=True)
+    written = tmp_path / "general.json"
+    subprocess.run(
+        [str(demoplan_binary), "learn", *map(str, recordings), "--generalise", "-o", str(written)],
+        check=True,
+        capture_output=True,
+    )
+    assert library.to_json() == written.read_text()
+    assert '"operator_form": "generalised"' in library.to_json()
+    # Learning into it again keeps it generalised; a specific library refuses.
+    library.learn(recordings)
+    assert library.to_json() == written.read_text()
+    specific = demoplan.Library()
+    specific.learn(recordings[:1])
+    with pytest.raises(demoplan.DemoplanError) as raised:
+        specific.learn(recordings, generalise=True)
+    assert raised.value.exit_code == 36
+    assert "one library holds operators of one form" in raised.value.message
+
+
 def test_operators_have_counts_costs_and_provenance(recordings: List[pathlib.Path]) -> None:
     library = demoplan.Library()
     library.learn(recordings)

@@ -389,6 +389,8 @@ pub struct LearnArgs {
     #[arg(long, value_name = "KIND", value_enum)]
     pub activities: Option<learn::Grouping>,
     #[command(flatten)]
+    pub form: learn::FormArgs,
+    #[command(flatten)]
     pub segmentation: SegmentationArgs,
     /// How long to wait while another learner writes the same library (its lock,
     /// FILE.lock, is held), with Fast Downward's units (`10`, `10s`, `2m`,

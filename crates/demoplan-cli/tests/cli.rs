@@ -1845,6 +1845,55 @@ fn learn_operators_domain_problem_and_solve_work_together() {
     );
     assert!(stderr_text(&mixed).contains("`runs` activities"));
     assert!(!tmp.join("mixed.json").exists());
+    // Generalised operators (`learn --generalise`): the file says so, learning into it
+    // again keeps them, and a library of specific operators refuses them.
+    let general = tmp.join("general.json");
+    let learned = succeeds(
+        demoplan()
+            .arg("learn")
+            .args(&recordings)
+            .arg("--generalise")
+            .arg("-o")
+            .arg(&general),
+    );
+    assert!(
+        stdout_text(&learned).contains("generalised: "),
+        "{}",
+        stdout_text(&learned)
+    );
+    let text = std::fs::read_to_string(&general).unwrap();
+    assert!(text.contains("\"operator_form\": \"generalised\""));
+    succeeds(
+        demoplan()
+            .arg("learn")
+            .arg(&recordings[0])
+            .arg("--library")
+            .arg(&general)
+            .arg("-o")
+            .arg(&general),
+    );
+    assert_eq!(std::fs::read_to_string(&general).unwrap(), text);
+    let refused = exits(
+        36,
+        demoplan()
+            .arg("learn")
+            .arg(&recordings[0])
+            .arg("--library")
+            .arg(&runs)
+            .args(["--activities", "runs", "--generalise", "-o"])
+            .arg(tmp.join("refused.json")),
+    );
+    assert!(stderr_text(&refused).contains("one library holds operators of one form"));
+    assert!(!tmp.join("refused.json").exists());
+    let planned = succeeds(
+        demoplan()
+            .arg("solve")
+            .arg(&general)
+            .arg(&problem)
+            .args(["--time-limit", "60", "--plan-file"])
+            .arg(tmp.join("general.plan")),
+    );
+    assert!(stdout_text(&planned).contains("Solution found at priority 1 "));
     // The plan validates on the domain it was found in and executes in the cube world.
     let level: String = log
         .lines()
@@ -2030,6 +2079,39 @@ fn reduced_study(out: &Path) -> Output {
         .unwrap()
 }
 
+/// `study --generalise` runs every condition with specific and with generalised
+/// operators (issue 39), and its files tell the two apart.
+#[test]
+fn study_generalise_runs_both_forms() {
+    let tmp = tempdir("study-generalise");
+    let out = tmp.join("out");
+    let run = demoplan()
+        .arg("study")
+        .arg("-o")
+        .arg(&out)
+        .args(["--seeds", "7", "--hands", "1", "--heights", "3"])
+        .args(["--generalise", "--time-limit", "10"])
+        .output()
+        .unwrap();
+    assert_eq!(run.status.code(), Some(0), "{}", transcript(&run));
+    let runs = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let header: Vec<&str> = runs.lines().next().unwrap().split(',').collect();
+    let col = header.iter().position(|c| *c == "generalised").unwrap();
+    let forms: Vec<&str> = runs
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').nth(col).unwrap())
+        .collect();
+    // 2 forms x 2 planners x 3 levels.
+    assert_eq!(forms.len(), 12, "{runs}");
+    assert_eq!(forms.iter().filter(|f| **f == "true").count(), 6, "{runs}");
+    let ratios = std::fs::read_to_string(out.join("ratios.csv")).unwrap();
+    assert_eq!(ratios.lines().count(), 1 + 2 * 2 * 2 * 2, "{ratios}");
+    let report = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(report.contains("operators specific and generalised"));
+    assert!(report.contains("<td>generalised</td>"));
+}
+
 #[test]
 fn study_writes_every_file_and_resumes() {
     let tmp = tempdir("study");
@@ -2070,21 +2152,21 @@ fn study_writes_every_file_and_resumes() {
     // ratios.csv: per condition (2 groupings x 2 heights), planner, measure and ratio.
     let ratios = read("ratios.csv");
     assert!(ratios.starts_with(
-        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n"
+        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,generalised,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n"
     ));
     assert_eq!(ratios.lines().count(), 1 + 2 * 2 * 2 * 2 * 2, "{ratios}");
     for line in ratios.lines().skip(1) {
         let f: Vec<&str> = line.split(',').collect();
-        assert_eq!(f[13], "2", "{line}");
+        assert_eq!(f[14], "2", "{line}");
         // A ratio for every seed, or the seeds without one counted.
-        if f[15] == "0" {
-            assert!(!f[17].is_empty(), "{line}");
+        if f[16] == "0" {
+            assert!(!f[18].is_empty(), "{line}");
         }
     }
     // With every Idle apart, priority 1 builds no tower of 3: no ratio_p1, Algorithm 1
     // widens and the page shows its levels with their cumulative time.
     assert!(
-        ratios.contains("3,4,default,1,3,1,0,3,runs,false,lmcut,search,ratio_p1,2,0,2,,,"),
+        ratios.contains("3,4,default,1,3,1,0,3,runs,false,false,lmcut,search,ratio_p1,2,0,2,,,"),
         "{ratios}"
     );
     let html = read("report.html");

@@ -323,17 +323,28 @@ pub fn read_poses(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Poses> {
 /// The update writes `folder`/library.json (a folder of the caller's own): the library to
 /// add to is written there first when it holds anything. Returns the library learned and
 /// the log `demoplan learn` prints (what was skipped, ARFF warnings, a line per
-/// recording, the summary table, what was written). The GIL is released.
+/// recording, the summary table, what was written). `generalise` is `learn
+/// --generalise`: an empty library becomes one of generalised operators, a library of
+/// specific operators refuses it (exit 36). The GIL is released.
 #[pyfunction]
-#[pyo3(name = "learn", signature = (library, files, folder, mapping=None))]
+#[pyo3(name = "learn", signature = (library, files, folder, mapping=None, generalise=false))]
 pub fn learn_recordings(
     py: Python<'_>,
     library: &PyLibrary,
     files: Vec<PathBuf>,
     folder: PathBuf,
     mapping: Option<PathBuf>,
+    generalise: bool,
 ) -> PyResult<(PyLibrary, String)> {
-    let answer = py.detach(|| learn_into(&library.inner, &files, &folder, mapping.as_deref()));
+    let answer = py.detach(|| {
+        learn_into(
+            &library.inner,
+            &files,
+            &folder,
+            mapping.as_deref(),
+            generalise,
+        )
+    });
     answer
         .map(|(inner, log)| (PyLibrary { inner }, log))
         .map_err(|f| failure_from(py, f))
@@ -344,6 +355,7 @@ fn learn_into(
     paths: &[PathBuf],
     folder: &Path,
     mapping: Option<&Path>,
+    generalise: bool,
 ) -> Result<(learn::Library, String), Failure> {
     let out = folder.join("library.json");
     let start_from = library.segments() > 0 || library.recordings().next().is_some();
@@ -355,6 +367,13 @@ fn learn_into(
         out: &out,
         lambda: Some(library.lambda),
         grouping: None,
+        // `--generalise`; without it, an empty library keeps its own form (a library
+        // read from a file may be generalised and hold nothing yet).
+        form: match (generalise, start_from) {
+            (true, _) => Some(learn::OperatorForm::Generalised),
+            (false, false) => Some(library.form()),
+            (false, true) => None,
+        },
         // `demoplan learn`'s default; the folder is the caller's, so no other learner
         // holds its lock.
         lock_timeout: Some(Duration::from_secs(10)),

@@ -105,6 +105,10 @@ pub struct Conditions {
     pub activities: String,
     /// Whether operators that change nothing stay in the domains.
     pub keep_without_effects: bool,
+    /// Whether the library's operators are generalised ([`learn::OperatorForm`]).
+    /// Absent from records written before it existed, and written only when true.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub generalised: bool,
 }
 
 impl Conditions {
@@ -123,6 +127,7 @@ impl Conditions {
             distractors: learn::DEFAULT_CUBES.saturating_sub(height),
             activities: learn::Grouping::Settled.name().to_string(),
             keep_without_effects: false,
+            generalised: false,
         }
     }
 
@@ -131,11 +136,17 @@ impl Conditions {
         self.height * self.towers + self.distractors
     }
 
-    /// The text the id hashes: every condition, named, in a fixed order.
+    /// The text the id hashes: every condition, named, in a fixed order. `generalised`
+    /// is named only when true, so that the ids of cells from before it stay.
     pub fn canonical(&self) -> String {
+        let generalised = if self.generalised {
+            ";generalised=true"
+        } else {
+            ""
+        };
         format!(
             "seed={};participants={};per_participant={};params={};hands={};height={};\
-             towers={};distractors={};activities={};keep_without_effects={}",
+             towers={};distractors={};activities={};keep_without_effects={}{}",
             self.seed,
             self.participants,
             self.per_participant,
@@ -145,15 +156,21 @@ impl Conditions {
             self.towers,
             self.distractors,
             self.activities,
-            self.keep_without_effects
+            self.keep_without_effects,
+            generalised
         )
     }
 
     /// The conditions that decide the library (not the scene).
     pub(crate) fn library_key(&self) -> String {
         format!(
-            "{};{};{};{};{}",
-            self.seed, self.participants, self.per_participant, self.params, self.activities
+            "{};{};{};{};{};{}",
+            self.seed,
+            self.participants,
+            self.per_participant,
+            self.params,
+            self.activities,
+            self.generalised
         )
     }
 
@@ -271,6 +288,7 @@ mod tests {
         variants.push(with(&|c| c.conditions.distractors = 1));
         variants.push(with(&|c| c.conditions.activities = "runs".into()));
         variants.push(with(&|c| c.conditions.keep_without_effects = true));
+        variants.push(with(&|c| c.conditions.generalised = true));
         variants.push(with(&|c| c.level = LevelChoice::Prio(1)));
         variants.push(with(&|c| c.level = LevelChoice::Algorithm1));
         variants.push(with(&|c| c.planner = Planner::Ipdb));

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::time::Duration;
 
 use grounding::GroundingConfig;
-use learn::{levels, problem, tower_goal, DomainOptions, Grouping, Library, Scene};
+use learn::{levels, problem, tower_goal, DomainOptions, Grouping, Library, OperatorForm, Scene};
 use segment::ActivityTree;
 use slim::{Backend, FastDownward, MemoryProbe, Outcome, PlanRun, RunLimits};
 
@@ -80,8 +80,12 @@ impl Lab {
                 conditions.per_participant,
             )
             .map_err(|e| ExperimentError::Condition(e.to_string()))?;
+            let form = match conditions.generalised {
+                true => OperatorForm::Generalised,
+                false => OperatorForm::Specific,
+            };
             self.libraries
-                .insert(key.clone(), learn_study(&study, grouping));
+                .insert(key.clone(), learn_study_as(&study, grouping, form));
         }
         self.libraries
             .get(&key)
@@ -336,9 +340,14 @@ fn fill(
 /// Learns the library of a simulated study in-process (what `demoplan simulate` and
 /// `demoplan learn` do through files).
 pub fn learn_study(study: &simulate::Study, grouping: Grouping) -> Library {
+    learn_study_as(study, grouping, OperatorForm::Specific)
+}
+
+/// [`learn_study`] into a library of operators of `form` (`learn --generalise`).
+pub fn learn_study_as(study: &simulate::Study, grouping: Grouping, form: OperatorForm) -> Library {
     let config = GroundingConfig::default();
     let tree = ActivityTree::table_one();
-    let mut library = Library::with_grouping(learn::DEFAULT_LAMBDA, grouping);
+    let mut library = Library::with_form(learn::DEFAULT_LAMBDA, grouping, form);
     let source = format!("simulated, seed {}", study.seed);
     for demo in &study.demonstrations {
         let frames = demo.frames().map(|(f, _)| f).collect();

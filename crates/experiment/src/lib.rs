@@ -51,7 +51,7 @@ pub use report::paper;
 pub use cell::{params_key, Cell, Conditions, LevelChoice, Planner, DEFAULT_PARAMS};
 pub use findings::findings;
 pub use grid::{cell_list, CellCommand, GridRun, RunLayout, Runner};
-pub use lab::{execute, learn_study, tower_problem, towers, Known, Lab};
+pub use lab::{execute, learn_study, learn_study_as, tower_problem, towers, Known, Lab};
 pub use memory_limit::auto_memory_limit;
 pub use numbers::{numbers, sizes};
 pub use ratio::{quartiles, ratio, ratio_text, Quartiles};

@@ -70,10 +70,10 @@ pub(crate) fn csv_field(text: &str) -> String {
 /// The condition columns `results.csv`, `runs.csv` and `ratios.csv` share, after the seed
 /// (which `ratios.csv`, a distribution over seeds, leaves out): participants,
 /// per_participant, params, hands, height, towers, distractors, cubes, activities,
-/// keep_without_effects.
+/// keep_without_effects, generalised.
 pub(crate) fn condition_fields(c: &crate::cell::Conditions) -> String {
     format!(
-        "{},{},{},{},{},{},{},{},{},{}",
+        "{},{},{},{},{},{},{},{},{},{},{}",
         c.participants,
         c.per_participant,
         csv_field(&c.params),
@@ -84,6 +84,7 @@ pub(crate) fn condition_fields(c: &crate::cell::Conditions) -> String {
         c.cubes(),
         c.activities,
         c.keep_without_effects,
+        c.generalised,
     )
 }
 

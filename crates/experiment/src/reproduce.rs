@@ -607,7 +607,7 @@ fn tables_markdown(
 
 /// The columns of `results.csv` and `runs.csv`: conditions, level, planner, outcome,
 /// the four times and the counts.
-pub(crate) const RUNS_HEADER: &str = "id,seed,participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,level,prio,operators,planner,time_limit_s,repeat,outcome,translate_s,heuristic_s,search_s,total_s,expansions,generated,cost,length,peak_memory_kb,executed";
+pub(crate) const RUNS_HEADER: &str = "id,seed,participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,generalised,level,prio,operators,planner,time_limit_s,repeat,outcome,translate_s,heuristic_s,search_s,total_s,expansions,generated,cost,length,peak_memory_kb,executed";
 
 pub(crate) fn runs_csv_row(r: &RunRecord) -> String {
     let c = &r.conditions;

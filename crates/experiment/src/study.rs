@@ -1,7 +1,8 @@
 //! `demoplan study`: the slimming effect over seeds and conditions, as distributions.
 //!
 //! The grid is every seed x hands x distractors x height x towers x grouping x
-//! (operators without effects dropped, and kept too when asked) x planner x level,
+//! (operators without effects dropped, and kept too when asked) x (specific operators,
+//! and generalised ones too when asked) x planner x level,
 //! where the levels are priority 1, the full domain and Algorithm 1. It is a grid
 //! ([`crate::grid`]): each cell writes its result into its run folder as it finishes,
 //! and a study run again on the same folder skips the cells already there.
@@ -39,6 +40,9 @@ pub struct StudyOptions {
     pub activities: Vec<String>,
     /// Also run every condition with operators that change nothing kept in the domains.
     pub keep_without_effects: bool,
+    /// Also run every condition with the library's operators generalised
+    /// (`learn --generalise`).
+    pub generalise: bool,
     pub params: simulate::SimParams,
     /// How the cells run (limits, Fast Downward beside, processes).
     pub grid: GridSettings,
@@ -97,6 +101,10 @@ pub struct StudyConditionArgs {
         arg(long, value_name = "NAME", value_parser = simulate::Style::parse)
     )]
     pub style: Option<simulate::Style>,
+    /// Also run every condition with the library's operators generalised, as `learn
+    /// --generalise` learns them (specific operators only by default).
+    #[cfg_attr(feature = "clap", arg(long))]
+    pub generalise: bool,
 }
 
 impl StudyConditionArgs {
@@ -135,6 +143,7 @@ impl StudyConditionArgs {
             towers: sizes("--towers", &self.towers)?,
             activities,
             keep_without_effects: self.keep_without_effects,
+            generalise: self.generalise,
             params,
             grid,
         })
@@ -214,10 +223,17 @@ pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {
     } else {
         &[false]
     };
+    let forms: &[bool] = if options.generalise {
+        &[false, true]
+    } else {
+        &[false]
+    };
     let mut cells = Vec::new();
     for &seed in &options.seeds {
         for activities in &options.activities {
-            for &keep in keeps {
+            for (&keep, &generalised) in
+                keeps.iter().flat_map(|k| forms.iter().map(move |g| (k, g)))
+            {
                 for &hands in &options.hands {
                     for &distractors in &options.distractors {
                         for &towers in &options.towers {
@@ -233,6 +249,7 @@ pub fn study_grid(options: &StudyOptions) -> Vec<Cell> {
                                     distractors,
                                     activities: activities.clone(),
                                     keep_without_effects: keep,
+                                    generalised,
                                 };
                                 for planner in options.grid.planners() {
                                     for level in [
@@ -357,6 +374,7 @@ fn study_json(options: &StudyOptions, cells: usize) -> String {
         "towers": options.towers,
         "activities": options.activities,
         "keep_without_effects": options.keep_without_effects,
+        "generalise": options.generalise,
         "params": options.params.to_json(),
         "params_key": params_key(&options.params),
         "time_limit_s": options.grid.time_limit.as_secs_f64(),
@@ -448,7 +466,7 @@ fn ratio_table(records: &[RunRecord]) -> Vec<RatioRow> {
 
 fn ratios_csv(rows: &[RatioRow]) -> String {
     let mut s = String::from(
-        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n",
+        "participants,per_participant,params,hands,height,towers,distractors,cubes,activities,keep_without_effects,generalised,planner,measure,ratio,seeds,bounds,missing,q1,median,q3\n",
     );
     for row in rows {
         let c = &row.conditions;
@@ -559,7 +577,7 @@ fn report_page(
         s,
         "<p>{} planning runs on {}: {} participants x {} demonstrations each; hands {:?}; \
          tower heights {:?}; towers {:?}; distractor cubes {:?}; activities {:?}; operators \
-         without effects {}; {} s per run; machine {}. Written by <code>demoplan study</code>; \
+         without effects {}; operators {}; {} s per run; machine {}. Written by <code>demoplan study</code>; \
          every file is described in <code>docs/study.md</code>.</p>",
         records.len(),
         html_escape(&seeds),
@@ -574,6 +592,11 @@ fn report_page(
             "dropped and kept"
         } else {
             "dropped"
+        },
+        if options.generalise {
+            "specific and generalised"
+        } else {
+            "specific"
         },
         report::format_limit(options.grid.time_limit.as_secs_f64()),
         html_escape(&format!(
@@ -599,20 +622,21 @@ fn report_page(
             t = measure.title()
         );
     }
-    s.push_str("<h2>Ratios</h2>\n<table>\n<tr><th>hands</th><th>height</th><th>towers</th><th>distractors</th><th>activities</th><th>without effects</th><th>planner</th><th>measure</th><th>ratio</th><th>seeds</th><th>bounds</th><th>no ratio</th><th>q1</th><th>median</th><th>q3</th></tr>\n");
+    s.push_str("<h2>Ratios</h2>\n<table>\n<tr><th>hands</th><th>height</th><th>towers</th><th>distractors</th><th>activities</th><th>without effects</th><th>operators</th><th>planner</th><th>measure</th><th>ratio</th><th>seeds</th><th>bounds</th><th>no ratio</th><th>q1</th><th>median</th><th>q3</th></tr>\n");
     for row in table {
         let c = &row.conditions;
         let q = &row.quartiles;
         let show = |r: Option<Ratio>| r.map_or("-".to_string(), |r| r.to_string());
         let _ = writeln!(
             s,
-            "<tr><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td></tr>",
+            "<tr><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td><td class=\"num\">{}</td></tr>",
             c.hands,
             c.height,
             c.towers,
             c.distractors,
             html_escape(&c.activities),
             if c.keep_without_effects { "kept" } else { "dropped" },
+            if c.generalised { "generalised" } else { "specific" },
             html_escape(row.planner.label()),
             row.measure.name(),
             row.which.name(),

@@ -22,7 +22,8 @@ pub fn levels_table(levels: &[Level<'_>]) -> String {
     s
 }
 
-/// Per type: activities, operators, and each operator's count and cost.
+/// Per type: activities, operators, and each operator's count and cost; in a library of
+/// generalised operators, a last line says from how many demonstrated ones.
 pub fn summary_table(library: &Library) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -55,6 +56,14 @@ pub fn summary_table(library: &Library) -> String {
         library.segments(),
         library.len()
     );
+    if library.form() == crate::OperatorForm::Generalised {
+        let _ = writeln!(
+            s,
+            "generalised: {} operators from {} demonstrated ones (docs/operators.md)",
+            library.len(),
+            library.specific_entries().count()
+        );
+    }
     s
 }
 

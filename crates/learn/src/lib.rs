@@ -12,6 +12,10 @@
 //!   `put2`, ...) and costs them with `ceil(lambda * (1 - count / type_count))`. Its
 //!   JSON form is versioned and deterministic: the same recordings give the same bytes
 //!   in any learning order.
+//! - [`generalise()`] merges the operators of one type whose effects are equal up to
+//!   renaming into one that keeps only their shared precondition facts: a library of
+//!   [`OperatorForm::Generalised`] operators (`learn --generalise`) counts and ranks
+//!   those, computed from the demonstrated ones it keeps.
 //! - [`operator_subset`] and [`levels`] are the paper's `OperatorSubset` and the levels
 //!   of its Algorithm 1; [`domain`] and [`problem`] write PDDL through the `pddl` crate.
 //!
@@ -28,6 +32,7 @@ mod cards;
 mod cause;
 mod domain;
 mod files;
+mod generalise;
 mod hash;
 mod inputs;
 mod library;
@@ -52,6 +57,7 @@ pub use files::{
     arff_reader, hand_table, labelled_frames, learn_tree, nominal_dataset, read_truth,
     segment_arff, segment_path, FileError, Labelled, TreeError, ARFF_FRAME_RATE,
 };
+pub use generalise::{covers, effect_key, generalise, FormArgs, OperatorForm, ALIGNMENT_BUDGET};
 pub use hash::{stable_hash, StableHasher};
 pub use inputs::{content_hash, learning_inputs, Batch, Inputs, InputsError};
 pub use library::{

@@ -13,6 +13,7 @@ use recording::Header;
 use segment::{Activity, Segment};
 use serde::{Deserialize, Serialize};
 
+use crate::generalise::{generalise, OperatorForm};
 use crate::meaning::Breach;
 use crate::mend::{mend, MendCounts};
 use crate::operator::{fact_text, lift_all, LiftedFact, Operator, ParamType};
@@ -97,8 +98,14 @@ pub struct Library {
     pub lambda: u32,
     /// How segments become activities; one library counts with one grouping.
     pub grouping: Grouping,
+    /// Whether the library shows its operators as demonstrated or generalised.
+    form: OperatorForm,
     recordings: BTreeMap<String, RecordingInfo>,
+    /// The demonstrated operators: what is counted, merged and stored.
     operators: BTreeMap<Operator, Entry>,
+    /// With [`OperatorForm::Generalised`], the generalised operators computed from
+    /// `operators` after every change (empty otherwise).
+    generalised: BTreeMap<Operator, Entry>,
 }
 
 /// An operator with what its rank gives it: name, rank within its type, and cost.
@@ -179,12 +186,67 @@ impl Library {
 
     /// An empty library that groups segments into activities as `grouping` says.
     pub fn with_grouping(lambda: u32, grouping: Grouping) -> Library {
+        Library::with_form(lambda, grouping, OperatorForm::default())
+    }
+
+    /// An empty library that groups segments as `grouping` says and shows its operators
+    /// in `form`: with [`OperatorForm::Generalised`], [`entries`](Self::entries),
+    /// [`ranked`](Self::ranked), names, costs and domains are those of the generalised
+    /// operators ([`generalise`]), computed from the demonstrated ones, which the
+    /// library keeps ([`specific_entries`](Self::specific_entries)) so that learning
+    /// stays incremental and independent of order.
+    pub fn with_form(lambda: u32, grouping: Grouping, form: OperatorForm) -> Library {
         Library {
             lambda,
             grouping,
+            form,
             recordings: BTreeMap::new(),
             operators: BTreeMap::new(),
+            generalised: BTreeMap::new(),
         }
+    }
+
+    /// The form the library shows its operators in.
+    pub fn form(&self) -> OperatorForm {
+        self.form
+    }
+
+    /// The operators the library shows: demonstrated or generalised.
+    fn shown(&self) -> &BTreeMap<Operator, Entry> {
+        match self.form {
+            OperatorForm::Specific => &self.operators,
+            OperatorForm::Generalised => &self.generalised,
+        }
+    }
+
+    /// Recomputes the generalised operators from the demonstrated ones: a generalised
+    /// operator's count is the sum of its members', its provenance their union.
+    fn refresh(&mut self) {
+        if self.form != OperatorForm::Generalised {
+            return;
+        }
+        let entries: Vec<&Entry> = self.operators.values().collect();
+        let operators: Vec<Operator> = entries.iter().map(|e| e.operator.clone()).collect();
+        self.generalised = generalise(&operators)
+            .into_iter()
+            .map(|(operator, members)| {
+                let mut count = 0u64;
+                let mut provenance = Vec::new();
+                for m in members {
+                    if let Some(e) = entries.get(m) {
+                        count = count.saturating_add(e.count);
+                        provenance.extend(e.provenance.iter().cloned());
+                    }
+                }
+                sort_provenance(&mut provenance);
+                let entry = Entry {
+                    operator: operator.clone(),
+                    count,
+                    provenance,
+                };
+                (operator, entry)
+            })
+            .collect();
     }
 
     /// Counts the operators of a recording's activities (its segments, consecutive ones of
@@ -221,6 +283,7 @@ impl Library {
                 new_operators = new_operators.saturating_add(1);
             }
         }
+        self.refresh();
         let segments_counted = activities.len() as u64;
         self.recordings.insert(
             info.hash.clone(),
@@ -240,8 +303,20 @@ impl Library {
 
     /// Adds every recording and count of another library (recordings this one has are
     /// skipped). Libraries that group segments differently count different things and
-    /// are not merged.
+    /// are not merged; nor are libraries of different operator forms.
     pub fn merge(&mut self, other: &Library) -> Result<(), LibraryError> {
+        if other.form != self.form {
+            return Err(LibraryError {
+                line: 0,
+                column: 0,
+                field: "operator_form".to_string(),
+                message: format!(
+                    "cannot merge a library of {} operators into one of {} operators",
+                    other.form.name(),
+                    self.form.name()
+                ),
+            });
+        }
         if other.grouping != self.grouping {
             return Err(LibraryError {
                 line: 0,
@@ -276,6 +351,7 @@ impl Library {
             }
             self.count_operator(e.operator.clone(), mine.len() as u64, mine);
         }
+        self.refresh();
         Ok(())
     }
 
@@ -284,6 +360,7 @@ impl Library {
     #[cfg(test)]
     pub(crate) fn insert_counted(&mut self, operator: Operator, count: u64) {
         self.count_operator(operator, count, Vec::new());
+        self.refresh();
     }
 
     /// Counts `count` more demonstrations of `operator`, by the segments of
@@ -336,14 +413,21 @@ impl Library {
         self.recordings.contains_key(hash)
     }
 
-    /// Every entry, in canonical order.
+    /// Every entry the library shows (generalised ones in a generalised library), in
+    /// canonical order.
     pub fn entries(&self) -> impl Iterator<Item = &Entry> {
+        self.shown().values()
+    }
+
+    /// Every demonstrated operator, in canonical order: the same as
+    /// [`entries`](Self::entries) in a library of specific operators.
+    pub fn specific_entries(&self) -> impl Iterator<Item = &Entry> {
         self.operators.values()
     }
 
-    /// Number of distinct operators.
+    /// Number of distinct operators shown.
     pub fn len(&self) -> usize {
-        self.operators.len()
+        self.shown().len()
     }
 
     /// Whether the library has no operator.
@@ -351,7 +435,8 @@ impl Library {
         self.operators.is_empty()
     }
 
-    /// Number of segments of a type: the sum of its operators' counts.
+    /// Number of segments of a type: the sum of its operators' counts (the same in
+    /// either form).
     pub fn type_count(&self, activity: Activity) -> u64 {
         self.operators
             .values()
@@ -371,9 +456,16 @@ impl Library {
     /// The operators of one type, most frequent first (ties by canonical form), with
     /// rank and cost.
     pub fn ranked_type(&self, activity: Activity) -> Vec<Ranked<'_>> {
+        self.ranked_in(self.shown(), activity)
+    }
+
+    fn ranked_in<'a>(
+        &self,
+        operators: &'a BTreeMap<Operator, Entry>,
+        activity: Activity,
+    ) -> Vec<Ranked<'a>> {
         let type_count = self.type_count(activity);
-        let mut entries: Vec<&Entry> = self
-            .operators
+        let mut entries: Vec<&Entry> = operators
             .values()
             .filter(|e| e.operator.activity == activity)
             .collect();
@@ -400,6 +492,14 @@ impl Library {
 
     /// The library as JSON (deterministic: the same library gives the same bytes).
     pub fn to_json(&self) -> String {
+        let records = |operators: &BTreeMap<Operator, Entry>| -> Vec<OperatorRecord> {
+            Activity::OPERATOR_ORDER
+                .iter()
+                .flat_map(|&a| self.ranked_in(operators, a))
+                .map(|r| OperatorRecord::of(&r))
+                .collect()
+        };
+        let generalised = self.form == OperatorForm::Generalised;
         let file = LibraryFile {
             format: FORMAT_NAME.to_string(),
             version: FORMAT_VERSION,
@@ -410,33 +510,9 @@ impl Library {
                 .map(|&a| (a.name().to_string(), self.type_count(a)))
                 .collect(),
             recordings: self.recordings.values().cloned().collect(),
-            operators: self
-                .ranked()
-                .iter()
-                .map(|r| {
-                    let op = r.operator();
-                    let names = op.param_names();
-                    let facts =
-                        |fs: &[LiftedFact]| fs.iter().map(|f| fact_text(f, &names)).collect();
-                    OperatorRecord {
-                        id: op.id(),
-                        name: r.name(),
-                        activity: op.activity.name().to_string(),
-                        count: r.count(),
-                        cost: r.cost,
-                        parameters: names
-                            .iter()
-                            .zip(&op.params)
-                            .map(|(n, t)| format!("{n} - {}", t.name()))
-                            .collect(),
-                        precondition: facts(&op.pre_positive),
-                        negative_precondition: facts(&op.pre_negative),
-                        add: facts(&op.add),
-                        delete: facts(&op.delete),
-                        provenance: r.entry.provenance.clone(),
-                    }
-                })
-                .collect(),
+            operator_form: generalised.then(|| self.form.name().to_string()),
+            operators: records(self.shown()),
+            specific_operators: generalised.then(|| records(&self.operators)),
         };
         let mut text = serde_json::to_string_pretty(&file).unwrap_or_default();
         text.push('\n');
@@ -511,7 +587,49 @@ impl Library {
                 ),
             )
         })?;
-        let mut library = Library::with_grouping(file.lambda, grouping);
+        let form = match &file.operator_form {
+            None => OperatorForm::Specific,
+            Some(name) => OperatorForm::from_name(name).ok_or_else(|| {
+                LibraryError::at(
+                    text,
+                    "\"operator_form\"",
+                    "operator_form",
+                    format!(
+                        "unknown operator form \"{name}\" (known: {})",
+                        OperatorForm::ALL
+                            .map(|f| format!("\"{}\"", f.name()))
+                            .join(", ")
+                    ),
+                )
+            })?,
+        };
+        // A generalised library counts its demonstrated operators; the ones it shows
+        // are computed from them.
+        let counted = match (form, file.specific_operators) {
+            (OperatorForm::Specific, None) => file.operators,
+            (OperatorForm::Generalised, Some(specific)) => specific,
+            (OperatorForm::Specific, Some(_)) => {
+                return Err(LibraryError::at(
+                    text,
+                    "\"specific_operators\"",
+                    "specific_operators",
+                    "`specific_operators` belongs to a library of generalised operators, and \
+                     this one has no `\"operator_form\": \"generalised\"`"
+                        .to_string(),
+                ))
+            }
+            (OperatorForm::Generalised, None) => {
+                return Err(LibraryError::at(
+                    text,
+                    "\"operator_form\"",
+                    "specific_operators",
+                    "a library of generalised operators lists the demonstrated ones in \
+                     `specific_operators`, and this one has none"
+                        .to_string(),
+                ))
+            }
+        };
+        let mut library = Library::with_form(file.lambda, grouping, form);
         for r in file.recordings {
             if library.recordings.contains_key(&r.hash) {
                 return Err(LibraryError::at(
@@ -524,7 +642,7 @@ impl Library {
             library.recordings.insert(r.hash.clone(), r);
         }
         let mut total: u64 = 0;
-        for (i, record) in file.operators.into_iter().enumerate() {
+        for (i, record) in counted.into_iter().enumerate() {
             let operator = record.operator(text, i)?;
             // Every sum of counts (per type, per library) is at most this total.
             total = match total.checked_add(record.count) {
@@ -575,6 +693,7 @@ impl Library {
             // Below `total`, checked above: no overflow.
             library.count_operator(operator, record.count, record.provenance);
         }
+        library.refresh();
         Ok(library)
     }
 }
@@ -610,11 +729,20 @@ struct LibraryFile {
     /// before the field existed counted runs of one class.
     #[serde(default = "runs_grouping")]
     activities: String,
+    /// `generalised` in a library of generalised operators ([`OperatorForm::name`]);
+    /// absent (files before it existed, and libraries of specific operators): specific.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    operator_form: Option<String>,
     /// Derived (sums of counts); written for readers, ignored when read.
     #[serde(default)]
     type_counts: BTreeMap<String, u64>,
     recordings: Vec<RecordingInfo>,
+    /// The operators shown: in a generalised library, derived from
+    /// `specific_operators` and ignored when read.
     operators: Vec<OperatorRecord>,
+    /// In a generalised library: the demonstrated operators, what is counted.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    specific_operators: Option<Vec<OperatorRecord>>,
 }
 
 #[derive(Debug, Serialize, Deserialize)]
@@ -642,6 +770,30 @@ struct OperatorRecord {
 }
 
 impl OperatorRecord {
+    /// The record of a ranked operator.
+    fn of(r: &Ranked<'_>) -> OperatorRecord {
+        let op = r.operator();
+        let names = op.param_names();
+        let facts = |fs: &[LiftedFact]| fs.iter().map(|f| fact_text(f, &names)).collect();
+        OperatorRecord {
+            id: op.id(),
+            name: r.name(),
+            activity: op.activity.name().to_string(),
+            count: r.count(),
+            cost: r.cost,
+            parameters: names
+                .iter()
+                .zip(&op.params)
+                .map(|(n, t)| format!("{n} - {}", t.name()))
+                .collect(),
+            precondition: facts(&op.pre_positive),
+            negative_precondition: facts(&op.pre_negative),
+            add: facts(&op.add),
+            delete: facts(&op.delete),
+            provenance: r.entry.provenance.clone(),
+        }
+    }
+
     /// The operator this record describes; errors point at the offending string.
     fn operator(&self, text: &str, index: usize) -> Result<Operator, LibraryError> {
         let which = || {

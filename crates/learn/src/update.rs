@@ -12,8 +12,8 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use crate::{
-    content_hash, Batch, Grouping, Library, LibraryError, LockError, Segmented, Waiting, WriteLock,
-    DEFAULT_LAMBDA,
+    content_hash, Batch, Grouping, Library, LibraryError, LockError, OperatorForm, Segmented,
+    Waiting, WriteLock, DEFAULT_LAMBDA,
 };
 
 /// A library file that could not be read.
@@ -69,6 +69,9 @@ pub struct Update<'a> {
     pub lambda: Option<u32>,
     /// How a new library groups segments into activities (default `settled`).
     pub grouping: Option<Grouping>,
+    /// The form of a new library's operators (default specific; `learn --generalise`:
+    /// generalised).
+    pub form: Option<OperatorForm>,
     /// How long to wait while another learner holds the lock; `None`: as long as it
     /// takes.
     pub lock_timeout: Option<Duration>,
@@ -110,6 +113,21 @@ pub enum UpdateError {
         asked: Grouping,
         library: Grouping,
     },
+    /// The library's operators are of another form than asked (`--generalise`): one
+    /// library holds operators of one form.
+    #[error(
+        "{} operators asked for{}, but the library's are {} ({}); one library holds \
+         operators of one form: learn into a new library to change it",
+        asked.name(),
+        if *asked == OperatorForm::Generalised { " (--generalise)" } else { "" },
+        library.name(),
+        path.display()
+    )]
+    Form {
+        path: PathBuf,
+        asked: OperatorForm,
+        library: OperatorForm,
+    },
     /// The library's lock was not taken.
     #[error(transparent)]
     Lock(#[from] LockError),
@@ -148,6 +166,13 @@ impl Update<'_> {
                 library: library.grouping,
             });
         }
+        if let Some(asked) = self.form.filter(|&f| f != library.form()) {
+            return Err(UpdateError::Form {
+                path: path.to_path_buf(),
+                asked,
+                library: library.form(),
+            });
+        }
         Ok(Some(library))
     }
 
@@ -182,9 +207,10 @@ impl Update<'_> {
         atomic_write::remove_stale_temporaries(lock.target());
         let mut library = match self.read()? {
             Some(library) => library,
-            None => Library::with_grouping(
+            None => Library::with_form(
                 self.lambda.unwrap_or(DEFAULT_LAMBDA),
                 self.grouping.unwrap_or_default(),
+                self.form.unwrap_or_default(),
             ),
         };
         let log = batch.add_to(&mut library, &mut segment)?;
@@ -210,6 +236,7 @@ mod tests {
             out: &path,
             lambda,
             grouping,
+            form: None,
             lock_timeout: None,
         };
         assert!(update(Some(100), Some(Grouping::Runs))
@@ -254,6 +281,24 @@ mod tests {
                 path.display()
             ))
         );
+        let generalise = Update {
+            form: Some(OperatorForm::Generalised),
+            ..update(None, None)
+        };
+        assert_eq!(
+            said(generalise.read()),
+            Some(format!(
+                "generalised operators asked for (--generalise), but the library's are \
+                 specific ({}); one library holds operators of one form: learn into a new \
+                 library to change it",
+                path.display()
+            ))
+        );
+        let specific = Update {
+            form: Some(OperatorForm::Specific),
+            ..update(None, None)
+        };
+        assert!(specific.read().unwrap().is_some());
         std::fs::write(&path, b"{\"format\": \xff}").unwrap();
         assert!(matches!(
             Library::read_file(&path),

@@ -37,9 +37,6 @@ impl From<UpdateError> for Failure {
     fn from(e: UpdateError) -> Failure {
         match e {
             UpdateError::Read(e) => read_failure(e),
-            e @ (UpdateError::Hash { .. }
-            | UpdateError::Lambda { .. }
-            | UpdateError::Grouping { .. }) => Failure::plain(ExitCode::USAGE, e),
             UpdateError::Lock(e @ LockError::Held { .. }) => Failure::plain(
                 ExitCode::LOCKED,
                 format!(
@@ -50,6 +47,7 @@ impl From<UpdateError> for Failure {
             e @ (UpdateError::Lock(_) | UpdateError::Write(_)) => {
                 Failure::plain(ExitCode::CRITICAL_ERROR, e)
             }
+            e => Failure::plain(ExitCode::USAGE, e), // the hash, lambda, grouping or form
         }
     }
 }
@@ -64,6 +62,7 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
         out: &args.out,
         lambda: args.lambda,
         grouping: args.activities,
+        form: args.form.form(),
         lock_timeout,
     };
     let before = update.read()?;

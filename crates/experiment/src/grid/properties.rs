@@ -64,6 +64,9 @@ impl LabNames {
         if c.keep_without_effects {
             domain.push_str("-keep");
         }
+        if c.generalised {
+            domain.push_str("-general");
+        }
         domain.push_str(&format!("-{}", level.replace("prio-", "prio")));
         let mut problem = format!("tower-{}", c.height);
         if c.towers != 1 {
@@ -246,6 +249,7 @@ mod tests {
                                                     distractors,
                                                     activities: activities.into(),
                                                     keep_without_effects: keep,
+                                                    generalised: false,
                                                 },
                                                 level,
                                                 planner,

@@ -726,6 +726,7 @@ mod tests {
             activities: "settled".into(),
             keep_without_effects: false,
             style: style.and_then(simulate::Style::from_name),
+            generalise: false,
         }
     }
 

@@ -4,8 +4,9 @@
 //! and generalised, and the sizes of the domains by priority.
 //!
 //! ```text
-//! cargo run --release -p learn --example generalised -- [FIRST_SEED] [COUNT] [runs]
+//! cargo run --release -p learn --example generalised -- [FIRST_SEED] [COUNT] [runs] [two-handed]
 //! ```
+//! `two-handed`: the simulator's two-handed style instead of the default parameters.
 //! Defaults: the embedded default seed (7), then seeds 1 to 20; activities `settled`
 //! (`runs`: every Idle run an activity of its own). `show`: list the default seed's
 //! operators with a short id of their effects up to renaming.
@@ -15,7 +16,12 @@ use learn::{levels, DomainOptions, Grouping, Library, OperatorForm};
 use segment::{Activity, ActivityTree};
 
 fn library(seed: u64, grouping: Grouping, form: OperatorForm) -> Option<Library> {
-    let study = simulate::study(&simulate::SimParams::default(), seed, 3, 4).ok()?;
+    let params = if std::env::args().any(|a| a == "two-handed") {
+        simulate::Style::TwoHanded.params()
+    } else {
+        simulate::SimParams::default()
+    };
+    let study = simulate::study(&params, seed, 3, 4).ok()?;
     let mut library = Library::with_form(learn::DEFAULT_LAMBDA, grouping, form);
     for demo in &study.demonstrations {
         let frames = demo.frames().map(|(f, _)| f).collect();

@@ -34,6 +34,7 @@ fn learnable(demo: &simulate::Demonstration) -> Learnable {
             source: String::new(),
             frames: segmented.frames,
             segments: 0,
+            ..Default::default()
         },
         header,
         segmented,
@@ -141,8 +142,10 @@ fn a_generalised_operator_holds_in_every_start_state_it_came_from() {
         }
         let mut checked = 0;
         for r in &recordings {
-            for s in learn::activities(&r.segmented.segments, library.grouping) {
-                let specific = learn::lift(&s, &r.segmented.space, &r.header);
+            let grouped = learn::activities(&r.segmented.segments, library.grouping);
+            let (mended, _) = learn::mend(&grouped, library.grouping, &r.segmented.space);
+            let (operators, _) = learn::lift_all(&mended, &r.segmented.space, &r.header);
+            for (s, specific) in mended.iter().zip(operators) {
                 // Its generalised operator: the one with its effects.
                 let mine: Vec<&learn::Entry> = library
                     .entries()
@@ -153,7 +156,7 @@ fn a_generalised_operator_holds_in_every_start_state_it_came_from() {
                 let general = &mine[0].operator;
                 assert!(covers(general, &specific), "{general} / {specific}");
                 assert!(
-                    applies(general, &s, &r.segmented.space, &r.header),
+                    applies(general, s, &r.segmented.space, &r.header),
                     "seed {seed}: {general} does not hold where {specific} started"
                 );
                 checked += 1;

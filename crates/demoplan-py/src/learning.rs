@@ -420,7 +420,6 @@ fn learn_into(
     log.push_str(&waited);
     log.push_str(&updated.log);
     log.push_str(&learn::summary_table(&learned));
-    log.push_str(&learned.mend_counts().line(learned.uncaused()));
     log.push_str(&format!(
         "wrote {} ({} operators from {} activities of {} recordings)\n",
         out.display(),

@@ -23,7 +23,8 @@ pub fn levels_table(levels: &[Level<'_>]) -> String {
 }
 
 /// Per type: activities, operators, and each operator's count and cost; in a library of
-/// generalised operators, a last line says from how many demonstrated ones.
+/// generalised operators, a line says from how many demonstrated ones; last, what mending
+/// did and the changes no hand caused.
 pub fn summary_table(library: &Library) -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -64,6 +65,7 @@ pub fn summary_table(library: &Library) -> String {
             library.specific_entries().count()
         );
     }
+    s.push_str(&library.mend_counts().line(library.uncaused()));
     s
 }
 

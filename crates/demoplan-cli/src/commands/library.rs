@@ -75,7 +75,6 @@ pub fn learn(args: LearnArgs) -> Result<ExitCode, Failure> {
     let library = &updated.library;
     print!("{}", updated.log);
     print!("{}", summary_table(library));
-    print!("{}", library.mend_counts().line(library.uncaused()));
     println!(
         "wrote {} ({} operators from {} activities of {} recordings)",
         args.out.display(),

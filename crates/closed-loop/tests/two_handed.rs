@@ -8,7 +8,7 @@
 use std::time::Duration;
 
 use closed_loop::{solve, Execution, Verdict};
-use grounding::{GroundingConfig, HandFacts, Predicate};
+use grounding::{GroundingConfig, Predicate};
 use learn::{problem, tower_goal, DomainOptions, Grouping, Library, Scene};
 use segment::{Activity, ActivityTree};
 use slim::{Backend, RunLimits};
@@ -37,17 +37,7 @@ fn learned(seed: u64) -> Learned {
         let seg = learn::segment_frames(demo.header(), frames.clone(), &config, &tree);
         let grouped = learn::activities(&seg.segments, Grouping::Settled);
         let (mended, counts) = learn::mend(&grouped, Grouping::Settled, &seg.space);
-        let truth_frames = truth.iter().map(|t| {
-            let facts: Vec<HandFacts> = (t.hands.iter())
-                .map(|h| HandFacts {
-                    moving: h.moving,
-                    open: None,
-                    acted_on: h.acted_on,
-                    in_hand: h.in_hand,
-                })
-                .collect();
-            (t.time, facts)
-        });
+        let truth_frames = learn::truth_hand_facts(&truth);
         let hands = seg.space.hands().to_vec();
         let truth = learn::truth_activities(
             &hands,

@@ -23,7 +23,7 @@
 
 use std::collections::BTreeMap;
 
-use grounding::{GroundingConfig, HandFacts, Predicate};
+use grounding::{GroundingConfig, Predicate};
 use learn::{Grouping, Library};
 use segment::{Activity, ActivityTree};
 use simulate::{SimParams, Style};
@@ -112,17 +112,7 @@ fn measure(o: &Options, seed: u64) -> Result<Measured, String> {
         let (mended, counts) = learn::mend(&grouped, o.grouping, &segmented.space);
         m.dropped += counts.dropped_total() as usize;
         m.mended += counts.mended_total() as usize;
-        let truth_frames = truth.iter().map(|t| {
-            let facts: Vec<HandFacts> = (t.hands.iter())
-                .map(|h| HandFacts {
-                    moving: h.moving,
-                    open: None,
-                    acted_on: h.acted_on,
-                    in_hand: h.in_hand,
-                })
-                .collect();
-            (t.time, facts)
-        });
+        let truth_frames = learn::truth_hand_facts(&truth);
         let hands = segmented.space.hands().to_vec();
         let truth_activities =
             learn::truth_activities(&hands, truth_frames, &tree, config.min_duration, o.grouping);

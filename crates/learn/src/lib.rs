@@ -72,6 +72,6 @@ pub use pipeline::{
     activities, add_frames, recording_hash, scene_at_frame, segment_frames, segment_reader,
     segment_with, Grouping, HandsGrounded, Observer, Segmented, StateAt,
 };
-pub use scoring::{truth_activities, truth_classes};
+pub use scoring::{truth_activities, truth_classes, truth_hand_facts};
 pub use timeline::{activity_color, timeline, Signals};
 pub use update::{LibraryFileError, Update, UpdateError, Updated};

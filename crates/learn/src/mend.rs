@@ -36,7 +36,7 @@ use segment::{Activity, Segment};
 
 use crate::cause::{changes, OtherHands};
 use crate::meaning::{breaches, holding, Breach};
-use crate::pipeline::{activities, Grouping};
+use crate::pipeline::{activities, union_objects, Grouping};
 
 /// What mending did, per breach: activities mended (relabelled or joined) and dropped.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
@@ -169,14 +169,7 @@ fn join(earlier: &Segment, later: &Segment) -> Segment {
     joined.start = earlier.start;
     joined.frames += earlier.frames;
     joined.start_state = earlier.start_state.clone();
-    for (set, more) in [
-        (&mut joined.held, &earlier.held),
-        (&mut joined.acted, &earlier.acted),
-    ] {
-        set.extend_from_slice(more);
-        set.sort_unstable();
-        set.dedup();
-    }
+    union_objects(&mut joined, earlier);
     joined
 }
 

@@ -285,8 +285,8 @@ pub fn activities(segments: &[Segment], grouping: Grouping) -> Vec<Segment> {
     out
 }
 
-/// Takes in the objects a later piece of an activity held and acted on.
-fn union_objects(activity: &mut Segment, piece: &Segment) {
+/// Takes in the objects another piece of an activity held and acted on.
+pub(crate) fn union_objects(activity: &mut Segment, piece: &Segment) {
     for (set, more) in [
         (&mut activity.held, &piece.held),
         (&mut activity.acted, &piece.acted),

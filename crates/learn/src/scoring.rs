@@ -42,3 +42,21 @@ pub fn truth_classes(learned: &[Segment], truth: &[Segment]) -> Vec<Option<Activ
         })
         .collect()
 }
+
+/// The simulator's truth as the hand facts [`truth_activities`] takes: per frame its time
+/// and each hand's noise-free `handMove`, `actedOn` and `inHand`.
+pub fn truth_hand_facts(
+    truth: &[simulate::TruthFrame],
+) -> impl Iterator<Item = (f64, Vec<HandFacts>)> + '_ {
+    truth.iter().map(|t| {
+        let facts = (t.hands.iter())
+            .map(|h| HandFacts {
+                moving: h.moving,
+                open: None,
+                acted_on: h.acted_on,
+                in_hand: h.in_hand,
+            })
+            .collect();
+        (t.time, facts)
+    })
+}
